@@ -1,0 +1,213 @@
+//! Circular walls, concave (the ball inside the circle) or convex (the ball
+//! outside, an obstacle).
+//!
+//! Curved walls are where billiards become chaotic: a concave arc focuses, a
+//! convex one defocuses. An [`ArcSegment`] is described by its centre, radius,
+//! start angle and a signed sweep: a positive (counter-clockwise) sweep makes a
+//! concave wall, a negative (clockwise) sweep a convex one, so that in both
+//! cases the table lies to the left of the direction of travel.
+
+use std::f64::consts::TAU;
+
+use glam::DVec2;
+
+use crate::error::{GeometryError, finite, positive};
+use crate::line::WallHit;
+
+/// A circular wall. See the [module docs](self) for the orientation rule.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct ArcSegment {
+    center: DVec2,
+    radius: f64,
+    start_angle: f64,
+    sweep: f64,
+    /// Unit direction from the centre to the start point.
+    from: DVec2,
+    /// Chord from the start point to the end point and the side of it the arc
+    /// lies on (`side * chord.perp_dot(p - start) >= 0` on the arc).
+    chord: DVec2,
+    side: f64,
+    full: bool,
+}
+
+impl ArcSegment {
+    /// An arc of `radius` about `center`, starting at angle `start_angle`
+    /// (radians from +x) and sweeping `sweep` radians: `sweep > 0` runs
+    /// counter-clockwise and makes a **concave** wall (table inside the
+    /// circle), `sweep < 0` runs clockwise and makes a **convex** wall.
+    ///
+    /// # Errors
+    /// [`GeometryError::NonFinite`], [`GeometryError::NonPositive`] for the
+    /// radius, [`GeometryError::BadSweep`] unless `0 < |sweep| <= 2π`.
+    pub fn new(
+        center: DVec2,
+        radius: f64,
+        start_angle: f64,
+        sweep: f64,
+    ) -> Result<Self, GeometryError> {
+        finite("center.x", center.x)?;
+        finite("center.y", center.y)?;
+        let radius = positive("radius", radius)?;
+        finite("start_angle", start_angle)?;
+        finite("sweep", sweep)?;
+        if !(sweep != 0.0 && sweep.abs() <= TAU * (1.0 + 1e-12)) {
+            return Err(GeometryError::BadSweep { index: 0, sweep });
+        }
+        let full = sweep.abs() >= TAU * (1.0 - 1e-12);
+        let from = DVec2::from_angle(start_angle);
+        let to = DVec2::from_angle(start_angle + sweep);
+        let mid = DVec2::from_angle(start_angle + 0.5 * sweep);
+        let chord = (to - from) * radius;
+        let side = chord.perp_dot((mid - from) * radius).signum();
+        Ok(ArcSegment {
+            center,
+            radius,
+            start_angle,
+            sweep,
+            from,
+            chord,
+            side,
+            full,
+        })
+    }
+
+    /// A full concave circle (the ball inside), starting at angle 0.
+    pub fn full_circle(center: DVec2, radius: f64) -> Result<Self, GeometryError> {
+        Self::new(center, radius, 0.0, TAU)
+    }
+
+    /// Centre of the circle.
+    pub fn center(&self) -> DVec2 {
+        self.center
+    }
+    /// Radius of the circle.
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+    /// Start angle (radians from +x).
+    pub fn start_angle(&self) -> f64 {
+        self.start_angle
+    }
+    /// Signed sweep (radians); positive = concave.
+    pub fn sweep(&self) -> f64 {
+        self.sweep
+    }
+    /// Whether the table lies inside the circle.
+    pub fn is_concave(&self) -> bool {
+        self.sweep > 0.0
+    }
+    /// Signed curvature: `-1/R` concave, `+1/R` convex.
+    pub fn curvature(&self) -> f64 {
+        if self.is_concave() {
+            -1.0 / self.radius
+        } else {
+            1.0 / self.radius
+        }
+    }
+    /// Arc length.
+    pub fn length(&self) -> f64 {
+        self.radius * self.sweep.abs()
+    }
+    /// Start point.
+    pub fn start(&self) -> DVec2 {
+        self.center + self.from * self.radius
+    }
+    /// End point.
+    pub fn end(&self) -> DVec2 {
+        self.center + DVec2::from_angle(self.start_angle + self.sweep) * self.radius
+    }
+    /// Unit direction from the centre to the start point.
+    pub fn start_direction(&self) -> DVec2 {
+        self.from
+    }
+
+    /// Whether a point on the circle lies on this arc (ends included, within
+    /// `slack`).
+    #[inline]
+    pub fn covers(&self, p: DVec2, slack: f64) -> bool {
+        self.full || self.side * self.chord.perp_dot(p - self.start()) >= -slack * self.chord.length()
+    }
+
+    /// Where a ball at `origin` with velocity `velocity` meets this arc from
+    /// the table side, if it does. `along` of the result is left at 0 (the arc
+    /// length needs an `atan2`; see [`Hit::s`](crate::Hit::s)).
+    #[inline]
+    pub fn cast(&self, origin: DVec2, velocity: DVec2, slack: f64) -> Option<WallHit> {
+        let hit = if self.is_concave() {
+            cast_concave_circle(self.center, self.radius, origin, velocity)
+        } else {
+            cast_convex_circle(self.center, self.radius, origin, velocity)
+        }?;
+        self.covers(hit.point, slack).then_some(hit)
+    }
+}
+
+/// The ball inside the circle `|x - c| = R`: where it leaves through the
+/// circle (the larger root). Flight time clamped at 0, contact snapped onto the
+/// circle, normal pointing to the centre.
+#[inline]
+pub fn cast_concave_circle(
+    center: DVec2,
+    radius: f64,
+    origin: DVec2,
+    velocity: DVec2,
+) -> Option<WallHit> {
+    let d = origin - center;
+    let a = velocity.length_squared();
+    let b = d.dot(velocity);
+    let c = d.length_squared() - radius * radius;
+    let disc = b * b - a * c;
+    if !(disc >= 0.0 && a > 0.0) {
+        return None;
+    }
+    let sq = disc.sqrt();
+    // Larger root of a t² + 2 b t + c, written to avoid cancellation.
+    let time = if b <= 0.0 { (sq - b) / a } else { -c / (b + sq) };
+    let time = time.max(0.0);
+    let r = d + velocity * time;
+    let inv = r.length_recip();
+    if !inv.is_finite() {
+        return None;
+    }
+    let radial = r * inv;
+    Some(WallHit {
+        time,
+        point: center + radial * radius,
+        normal: -radial,
+        along: 0.0,
+    })
+}
+
+/// The ball outside the circle `|x - c| = R`: where it first meets it (the
+/// smaller root), if it is moving towards it. Flight time clamped at 0, contact
+/// snapped onto the circle, normal pointing away from the centre.
+#[inline]
+pub fn cast_convex_circle(
+    center: DVec2,
+    radius: f64,
+    origin: DVec2,
+    velocity: DVec2,
+) -> Option<WallHit> {
+    let d = origin - center;
+    let b = d.dot(velocity);
+    if !(b < 0.0) {
+        return None;
+    }
+    let a = velocity.length_squared();
+    let c = d.length_squared() - radius * radius;
+    let disc = b * b - a * c;
+    if !(disc > 0.0) {
+        return None;
+    }
+    // Smaller root, c / (-b + sqrt(disc)) is stable for b < 0.
+    let time = (c / (disc.sqrt() - b)).max(0.0);
+    let r = d + velocity * time;
+    let radial = r * r.length_recip();
+    Some(WallHit {
+        time,
+        point: center + radial * radius,
+        normal: radial,
+        along: 0.0,
+    })
+}

@@ -1,0 +1,77 @@
+//! The circle table: the integrable reference case.
+//!
+//! A ball in a disk keeps its angular momentum about the centre and its angle of
+//! incidence; with spin the (v∥, u) map is an involution (PHYSICS.md), so the
+//! motion stays regular for every α.
+
+use std::f64::consts::TAU;
+
+use glam::DVec2;
+
+use crate::arc::cast_concave_circle;
+use crate::boundary::{Aabb, Boundary};
+use crate::error::{GeometryError, positive};
+use crate::hit::Hit;
+
+/// The disk `x² + y² <= R²` (paper §II.A: `R = 1`).
+///
+/// One wall (id 0), concave, curvature `-1/R`. Birkhoff `s = R θ`, with θ the
+/// polar angle of the contact measured counter-clockwise from +x, in `[0, 2πR)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Circle {
+    radius: f64,
+}
+
+impl Circle {
+    /// A disk of the given radius centred at the origin.
+    ///
+    /// # Errors
+    /// [`GeometryError::NonFinite`] or [`GeometryError::NonPositive`].
+    pub fn new(radius: f64) -> Result<Self, GeometryError> {
+        Ok(Circle {
+            radius: positive("radius", radius)?,
+        })
+    }
+
+    /// The paper's unit disk.
+    pub fn unit() -> Self {
+        Circle { radius: 1.0 }
+    }
+
+    /// Radius.
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+}
+
+impl Boundary for Circle {
+    #[inline]
+    fn cast(&self, origin: DVec2, velocity: DVec2) -> Option<Hit> {
+        let w = cast_concave_circle(DVec2::ZERO, self.radius, origin, velocity)?;
+        Some(Hit::on_circle(
+            w.time,
+            w.point,
+            w.normal,
+            -1.0 / self.radius,
+            0,
+            0.0,
+            DVec2::ZERO,
+            DVec2::X,
+            self.radius,
+            true,
+        ))
+    }
+
+    fn contains(&self, p: DVec2) -> bool {
+        p.length() <= self.radius * (1.0 + 1e-12)
+    }
+
+    fn aabb(&self) -> Aabb {
+        Aabb::new(DVec2::splat(-self.radius), DVec2::splat(self.radius))
+    }
+
+    fn perimeter(&self) -> f64 {
+        TAU * self.radius
+    }
+}

@@ -1,0 +1,64 @@
+//! Billiard tables for [spinball](https://docs.rs/spinball): where the walls
+//! are and which one a ball hits next.
+//!
+//! Everything a billiard needs from its table is the answer to one question,
+//! [`Boundary::cast`]: from this point, moving with this velocity, which wall
+//! comes next (flight time, contact point, inward normal, tangent, signed
+//! curvature, wall id, Birkhoff arc length). The built-in tables of the paper
+//! ([`Circle`], [`Rectangle`], [`Stadium`], [`Sinai`]) answer it in closed form
+//! with static dispatch; [`SegmentTable`] builds any other table from
+//! [`LineSegment`]s and [`ArcSegment`]s.
+//!
+//! ```
+//! use glam::DVec2;
+//! use spinball_geometry::{Boundary, Stadium};
+//!
+//! let stadium = Stadium::new(1.0)?;
+//! let hit = stadium.cast(DVec2::ZERO, DVec2::new(1.0, 0.0)).expect("bounded table");
+//! assert_eq!(hit.wall, 1); // the right cap
+//! assert!((hit.time - 2.0).abs() < 1e-15);
+//! assert_eq!(hit.normal, DVec2::new(-1.0, 0.0)); // pointing into the table
+//! assert_eq!(hit.curvature, -1.0); // concave
+//! # Ok::<(), spinball_geometry::GeometryError>(())
+//! ```
+//!
+//! # Conventions
+//! Normals point into the table; the tangent is `t = (n_y, -n_x)` (`t × n = +z`);
+//! curvature is signed by `dn/ds = k t`, negative on concave walls. These are
+//! the conventions of `PHYSICS.md` and of the paper's eqs. (1)–(3).
+//!
+//! # Robustness
+//! Contacts are snapped onto the wall, flight times are never negative, walls
+//! are only hit from the table side, and ties (corners, junctions) go to the
+//! lower wall id; each table's docs state its rule. Tolerances scale with the
+//! table size (`64 ε` times its length scale).
+//!
+//! # Features
+//! - `serde`: `Serialize`/`Deserialize` for tables, walls and hits.
+#![cfg_attr(docsrs, feature(doc_cfg))]
+
+mod arc;
+mod boundary;
+mod circle;
+mod error;
+mod hit;
+mod line;
+mod rectangle;
+mod segment_table;
+mod sinai;
+mod stadium;
+mod table;
+
+pub use arc::{ArcSegment, cast_concave_circle, cast_convex_circle};
+pub use boundary::{Aabb, Boundary};
+pub use circle::Circle;
+pub use error::GeometryError;
+pub use hit::{Hit, WallId, tangent_of};
+pub use line::{LineSegment, WallHit, cast_line};
+pub use rectangle::Rectangle;
+pub use segment_table::{Segment, SegmentTable};
+pub use sinai::Sinai;
+pub use stadium::Stadium;
+pub use table::{Table, TableSpecError, TableVisitor};
+
+pub use glam::DVec2;

@@ -1,0 +1,130 @@
+//! The rectangle table: integrable without spin, the flat-wall case of the
+//! conserved quantity `Q = v∥ - αu`.
+
+use glam::DVec2;
+
+use crate::boundary::{Aabb, Boundary};
+use crate::error::{GeometryError, positive};
+use crate::hit::{Hit, WallId};
+
+/// The rectangle `[-l, l] × [-h, h]` (paper §II.A: `l = h = 1` for Lyapunov
+/// runs, `l = 1.5, h = 1` for pictures).
+///
+/// Walls, in id order: 0 bottom (`y = -h`), 1 right (`x = l`), 2 top (`y = h`),
+/// 3 left (`x = -l`). Birkhoff `s` starts at the corner `(-l, -h)` and runs
+/// counter-clockwise; perimeter `4(l + h)`.
+///
+/// **Corners**: a ball that reaches a corner is reflected by the two walls in
+/// turn, the lower wall id first (ties in [`Boundary::cast`] go to the lower
+/// id); the second collision has zero flight time. This is the limit of hits
+/// just beside the corner, and for α = 0 it reverses the velocity, as a corner
+/// of a rectangle does.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Rectangle {
+    l: f64,
+    h: f64,
+    slack: f64,
+}
+
+impl Rectangle {
+    /// The rectangle of half-width `l` and half-height `h`.
+    ///
+    /// # Errors
+    /// [`GeometryError::NonFinite`] or [`GeometryError::NonPositive`].
+    pub fn new(l: f64, h: f64) -> Result<Self, GeometryError> {
+        let l = positive("l", l)?;
+        let h = positive("h", h)?;
+        Ok(Rectangle {
+            l,
+            h,
+            slack: 64.0 * f64::EPSILON * l.max(h),
+        })
+    }
+
+    /// The unit square `[-1, 1]²` used for the paper's Lyapunov runs.
+    pub fn square() -> Self {
+        Rectangle::new(1.0, 1.0).expect("valid")
+    }
+
+    /// Half-width.
+    pub fn l(&self) -> f64 {
+        self.l
+    }
+    /// Half-height.
+    pub fn h(&self) -> f64 {
+        self.h
+    }
+}
+
+/// The next hit on the walls of the box `[-l, l] × [-h, h]`, wall ids 0..=3 as
+/// in [`Rectangle`]. Shared with [`Sinai`](crate::Sinai).
+#[inline]
+pub(crate) fn cast_box(l: f64, h: f64, origin: DVec2, v: DVec2) -> Option<Hit> {
+    // Horizontal wall ahead (bottom = 0 or top = 2) and vertical (right = 1 or left = 3).
+    let (t_y, wall_y) = if v.y > 0.0 {
+        ((h - origin.y) / v.y, 2)
+    } else if v.y < 0.0 {
+        ((origin.y + h) / -v.y, 0)
+    } else {
+        (f64::INFINITY, 0)
+    };
+    let (t_x, wall_x) = if v.x > 0.0 {
+        ((l - origin.x) / v.x, 1)
+    } else if v.x < 0.0 {
+        ((origin.x + l) / -v.x, 3)
+    } else {
+        (f64::INFINITY, 3)
+    };
+    let use_y = t_y < t_x || (t_y == t_x && wall_y < wall_x);
+    let (time, wall) = if use_y { (t_y, wall_y) } else { (t_x, wall_x) };
+    if !time.is_finite() {
+        return None;
+    }
+    let time = time.max(0.0);
+    let p = origin + v * time;
+    Some(box_hit(l, h, time, p, wall))
+}
+
+/// Snap a contact onto box wall `wall` and fill in normal and arc length.
+#[inline]
+fn box_hit(l: f64, h: f64, time: f64, p: DVec2, wall: WallId) -> Hit {
+    let (point, normal, s) = match wall {
+        0 => {
+            let x = p.x.clamp(-l, l);
+            (DVec2::new(x, -h), DVec2::Y, x + l)
+        }
+        1 => {
+            let y = p.y.clamp(-h, h);
+            (DVec2::new(l, y), DVec2::NEG_X, 2.0 * l + y + h)
+        }
+        2 => {
+            let x = p.x.clamp(-l, l);
+            (DVec2::new(x, h), DVec2::NEG_Y, 2.0 * l + 2.0 * h + (l - x))
+        }
+        _ => {
+            let y = p.y.clamp(-h, h);
+            (DVec2::new(-l, y), DVec2::X, 4.0 * l + 2.0 * h + (h - y))
+        }
+    };
+    Hit::new(time, point, normal, 0.0, wall, s)
+}
+
+impl Boundary for Rectangle {
+    #[inline]
+    fn cast(&self, origin: DVec2, velocity: DVec2) -> Option<Hit> {
+        cast_box(self.l, self.h, origin, velocity)
+    }
+
+    fn contains(&self, p: DVec2) -> bool {
+        p.x.abs() <= self.l + self.slack && p.y.abs() <= self.h + self.slack
+    }
+
+    fn aabb(&self) -> Aabb {
+        Aabb::new(DVec2::new(-self.l, -self.h), DVec2::new(self.l, self.h))
+    }
+
+    fn perimeter(&self) -> f64 {
+        4.0 * (self.l + self.h)
+    }
+}

@@ -1,0 +1,283 @@
+//! Tables built from walls, so users can make their own (polygons, mushrooms,
+//! annuli, ...) without touching the core.
+//!
+//! A [`SegmentTable`] is an outer loop of walls listed counter-clockwise (the
+//! table on the left of each wall) and any number of holes listed clockwise.
+//! Casting checks every wall, so it is slower than the built-in tables, but it
+//! obeys the same contract: walls are only hit from the table side, ties go to
+//! the lower wall id.
+//!
+//! # A mushroom billiard
+//! The mushroom (Bunimovich 2001) has a semicircular cap on a rectangular stem;
+//! its phase space is divided by geometry into a regular and a chaotic part.
+//! ```
+//! use std::f64::consts::PI;
+//! use glam::DVec2;
+//! use spinball_geometry::{ArcSegment, Boundary, LineSegment, Segment, SegmentTable};
+//!
+//! let (r, w, h) = (1.0, 0.3, 1.0); // cap radius, stem half-width, stem height
+//! let p = DVec2::new;
+//! let line = |a, b| LineSegment::new(a, b).map(Segment::Line);
+//! let mushroom = SegmentTable::new(vec![
+//!     line(p(-w, -h), p(w, -h))?,
+//!     line(p(w, -h), p(w, 0.0))?,
+//!     line(p(w, 0.0), p(r, 0.0))?,
+//!     Segment::Arc(ArcSegment::new(DVec2::ZERO, r, 0.0, PI)?), // concave cap
+//!     line(p(-r, 0.0), p(-w, 0.0))?,
+//!     line(p(-w, 0.0), p(-w, -h))?,
+//! ])?;
+//! assert!(mushroom.contains(p(0.0, 0.5)));
+//! assert!(!mushroom.contains(p(0.8, -0.5)));
+//! let hit = mushroom.cast(p(0.0, -0.5), p(0.0, 1.0)).unwrap();
+//! assert_eq!(hit.wall, 3); // straight up the stem into the cap
+//! # Ok::<(), spinball_geometry::GeometryError>(())
+//! ```
+
+use glam::DVec2;
+
+use crate::arc::ArcSegment;
+use crate::boundary::{Aabb, Boundary};
+use crate::error::GeometryError;
+use crate::hit::{Hit, WallId};
+use crate::line::{LineSegment, WallHit};
+
+/// One wall of a [`SegmentTable`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum Segment {
+    /// A flat wall.
+    Line(LineSegment),
+    /// A circular wall (concave or convex by the sign of its sweep).
+    Arc(ArcSegment),
+}
+
+impl Segment {
+    /// First point.
+    pub fn start(&self) -> DVec2 {
+        match self {
+            Segment::Line(l) => l.start(),
+            Segment::Arc(a) => a.start(),
+        }
+    }
+    /// Last point.
+    pub fn end(&self) -> DVec2 {
+        match self {
+            Segment::Line(l) => l.end(),
+            Segment::Arc(a) => a.end(),
+        }
+    }
+    /// Length of the wall.
+    pub fn length(&self) -> f64 {
+        match self {
+            Segment::Line(l) => l.length(),
+            Segment::Arc(a) => a.length(),
+        }
+    }
+    /// Signed curvature (`0` flat, `-1/R` concave, `+1/R` convex).
+    pub fn curvature(&self) -> f64 {
+        match self {
+            Segment::Line(_) => 0.0,
+            Segment::Arc(a) => a.curvature(),
+        }
+    }
+    #[inline]
+    fn cast(&self, origin: DVec2, v: DVec2, slack: f64) -> Option<WallHit> {
+        match self {
+            Segment::Line(l) => l.cast(origin, v, slack),
+            Segment::Arc(a) => a.cast(origin, v, slack),
+        }
+    }
+    /// Twice the signed area between the chord and the wall (zero for a line).
+    fn bulge2(&self) -> f64 {
+        match self {
+            Segment::Line(_) => 0.0,
+            Segment::Arc(a) => a.radius() * a.radius() * (a.sweep() - a.sweep().sin()),
+        }
+    }
+    fn aabb(&self) -> Aabb {
+        let (s, e) = (self.start(), self.end());
+        let mut b = Aabb::new(s.min(e), s.max(e));
+        if let Segment::Arc(a) = self {
+            for dir in [DVec2::X, DVec2::Y, DVec2::NEG_X, DVec2::NEG_Y] {
+                let p = a.center() + dir * a.radius();
+                if a.covers(p, 0.0) {
+                    b = b.union(&Aabb::new(p, p));
+                }
+            }
+        }
+        b
+    }
+}
+
+/// A table bounded by user-given walls. See the [module docs](self).
+///
+/// Wall ids are the positions in the outer loop, then in each hole in turn.
+/// Birkhoff `s` runs along the walls in that order, starting at the start of
+/// wall 0.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct SegmentTable {
+    walls: Vec<Segment>,
+    /// Arc length at the start of each wall.
+    bases: Vec<f64>,
+    perimeter: f64,
+    aabb: Aabb,
+    slack: f64,
+}
+
+impl SegmentTable {
+    /// A table bounded by one counter-clockwise loop of walls.
+    ///
+    /// # Errors
+    /// See [`with_holes`](Self::with_holes).
+    pub fn new(outer: Vec<Segment>) -> Result<Self, GeometryError> {
+        Self::with_holes(outer, Vec::new())
+    }
+
+    /// A table bounded by a counter-clockwise outer loop with clockwise holes.
+    ///
+    /// # Errors
+    /// [`GeometryError::TooFewWalls`] for an empty loop (or a single straight
+    /// wall), [`GeometryError::OpenLoop`] if a wall does not end where the next
+    /// begins (within `1e-9` of the table size), [`GeometryError::WrongOrientation`]
+    /// for an outer loop that is not counter-clockwise or a hole that is not
+    /// clockwise.
+    pub fn with_holes(outer: Vec<Segment>, holes: Vec<Vec<Segment>>) -> Result<Self, GeometryError> {
+        let loops: Vec<&Vec<Segment>> = std::iter::once(&outer).chain(holes.iter()).collect();
+        let mut aabb: Option<Aabb> = None;
+        for lp in &loops {
+            for w in lp.iter() {
+                let b = w.aabb();
+                aabb = Some(aabb.map_or(b, |a| a.union(&b)));
+            }
+        }
+        let Some(aabb) = aabb else {
+            return Err(GeometryError::TooFewWalls { needed: 1, got: 0 });
+        };
+        let scale = 0.5 * aabb.size().length();
+        for (li, lp) in loops.iter().enumerate() {
+            let single_line = lp.len() == 1 && matches!(lp[0], Segment::Line(_));
+            if lp.is_empty() || single_line {
+                return Err(GeometryError::TooFewWalls {
+                    needed: 2,
+                    got: lp.len(),
+                });
+            }
+            for (i, w) in lp.iter().enumerate() {
+                let next = lp[(i + 1) % lp.len()];
+                let (e, s) = (w.end(), next.start());
+                if (e - s).length() > 1e-9 * scale {
+                    return Err(GeometryError::OpenLoop {
+                        lp: li,
+                        index: i,
+                        x1: e.x,
+                        y1: e.y,
+                        x2: s.x,
+                        y2: s.y,
+                    });
+                }
+            }
+            let area2: f64 = lp
+                .iter()
+                .map(|w| w.start().perp_dot(w.end()) + w.bulge2())
+                .sum();
+            let ok = if li == 0 { area2 > 0.0 } else { area2 < 0.0 };
+            if !ok {
+                return Err(GeometryError::WrongOrientation {
+                    lp: li,
+                    area: 0.5 * area2,
+                });
+            }
+        }
+        let walls: Vec<Segment> = loops.into_iter().flatten().copied().collect();
+        let mut bases = Vec::with_capacity(walls.len());
+        let mut s = 0.0;
+        for w in &walls {
+            bases.push(s);
+            s += w.length();
+        }
+        Ok(SegmentTable {
+            walls,
+            bases,
+            perimeter: s,
+            aabb,
+            slack: 64.0 * f64::EPSILON * scale,
+        })
+    }
+
+    /// A polygon through `vertices` listed counter-clockwise (the closing wall
+    /// from the last vertex back to the first is added).
+    ///
+    /// # Errors
+    /// As [`with_holes`](Self::with_holes), plus [`GeometryError::DegenerateWall`]
+    /// for repeated vertices and [`GeometryError::NonFinite`].
+    pub fn polygon(vertices: &[DVec2]) -> Result<Self, GeometryError> {
+        if vertices.len() < 3 {
+            return Err(GeometryError::TooFewWalls {
+                needed: 3,
+                got: vertices.len(),
+            });
+        }
+        let walls = (0..vertices.len())
+            .map(|i| {
+                LineSegment::new(vertices[i], vertices[(i + 1) % vertices.len()])
+                    .map(Segment::Line)
+                    .map_err(|e| match e {
+                        GeometryError::DegenerateWall { .. } => {
+                            GeometryError::DegenerateWall { index: i }
+                        }
+                        other => other,
+                    })
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        Self::new(walls)
+    }
+
+    /// The walls, in id order.
+    pub fn walls(&self) -> &[Segment] {
+        &self.walls
+    }
+}
+
+impl Boundary for SegmentTable {
+    fn cast(&self, origin: DVec2, v: DVec2) -> Option<Hit> {
+        let mut best: Option<(usize, WallHit)> = None;
+        for (i, w) in self.walls.iter().enumerate() {
+            if let Some(h) = w.cast(origin, v, self.slack)
+                && best.is_none_or(|(_, b)| h.time < b.time)
+            {
+                best = Some((i, h));
+            }
+        }
+        let (i, h) = best?;
+        let id = i as WallId;
+        let base = self.bases[i];
+        Some(match self.walls[i] {
+            Segment::Line(_) => Hit::new(h.time, h.point, h.normal, 0.0, id, base + h.along),
+            Segment::Arc(a) => Hit::on_circle(
+                h.time,
+                h.point,
+                h.normal,
+                a.curvature(),
+                id,
+                base,
+                a.center(),
+                a.start_direction(),
+                a.radius(),
+                a.is_concave(),
+            ),
+        })
+    }
+
+    fn aabb(&self) -> Aabb {
+        self.aabb
+    }
+
+    fn reference_point(&self) -> DVec2 {
+        self.aabb.center()
+    }
+
+    fn perimeter(&self) -> f64 {
+        self.perimeter
+    }
+}

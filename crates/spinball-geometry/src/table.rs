@@ -1,0 +1,214 @@
+//! Choosing a table at run time (from a command line or a config file).
+//!
+//! Hot loops are generic over the table type; [`Table`] is the enum of the
+//! built-in tables that a program picks from a string such as `stadium:a=1`,
+//! and [`Table::visit`] dispatches **once**, handing the concrete table to a
+//! generic [`TableVisitor`], so the loop inside runs with static dispatch.
+
+use std::fmt;
+use std::str::FromStr;
+
+use glam::DVec2;
+use thiserror::Error;
+
+use crate::boundary::{Aabb, Boundary};
+use crate::error::GeometryError;
+use crate::hit::Hit;
+use crate::{Circle, Rectangle, Sinai, Stadium};
+
+/// One of the built-in tables.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum Table {
+    /// [`Circle`].
+    Circle(Circle),
+    /// [`Rectangle`].
+    Rectangle(Rectangle),
+    /// [`Stadium`].
+    Stadium(Stadium),
+    /// [`Sinai`].
+    Sinai(Sinai),
+}
+
+/// A computation generic over the table type, run by [`Table::visit`].
+pub trait TableVisitor {
+    /// What the computation returns.
+    type Output;
+    /// Run with the concrete table.
+    fn visit<B: Boundary + Clone + Send + Sync>(self, table: &B) -> Self::Output;
+}
+
+impl Table {
+    /// Run `visitor` with the concrete table (one dispatch, then static).
+    pub fn visit<V: TableVisitor>(&self, visitor: V) -> V::Output {
+        match self {
+            Table::Circle(t) => visitor.visit(t),
+            Table::Rectangle(t) => visitor.visit(t),
+            Table::Stadium(t) => visitor.visit(t),
+            Table::Sinai(t) => visitor.visit(t),
+        }
+    }
+
+    /// Short name: `circle`, `rectangle`, `stadium` or `sinai`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Table::Circle(_) => "circle",
+            Table::Rectangle(_) => "rectangle",
+            Table::Stadium(_) => "stadium",
+            Table::Sinai(_) => "sinai",
+        }
+    }
+}
+
+impl From<Circle> for Table {
+    fn from(t: Circle) -> Self {
+        Table::Circle(t)
+    }
+}
+impl From<Rectangle> for Table {
+    fn from(t: Rectangle) -> Self {
+        Table::Rectangle(t)
+    }
+}
+impl From<Stadium> for Table {
+    fn from(t: Stadium) -> Self {
+        Table::Stadium(t)
+    }
+}
+impl From<Sinai> for Table {
+    fn from(t: Sinai) -> Self {
+        Table::Sinai(t)
+    }
+}
+
+/// Convenience: a [`Table`] is itself a boundary (one `match` per call; use
+/// [`Table::visit`] in hot loops).
+impl Boundary for Table {
+    fn cast(&self, origin: DVec2, velocity: DVec2) -> Option<Hit> {
+        match self {
+            Table::Circle(t) => t.cast(origin, velocity),
+            Table::Rectangle(t) => t.cast(origin, velocity),
+            Table::Stadium(t) => t.cast(origin, velocity),
+            Table::Sinai(t) => t.cast(origin, velocity),
+        }
+    }
+    fn contains(&self, p: DVec2) -> bool {
+        match self {
+            Table::Circle(t) => t.contains(p),
+            Table::Rectangle(t) => t.contains(p),
+            Table::Stadium(t) => t.contains(p),
+            Table::Sinai(t) => t.contains(p),
+        }
+    }
+    fn contains_shrunk(&self, p: DVec2, shrink: f64) -> bool {
+        match self {
+            Table::Circle(t) => t.contains_shrunk(p, shrink),
+            Table::Rectangle(t) => t.contains_shrunk(p, shrink),
+            Table::Stadium(t) => t.contains_shrunk(p, shrink),
+            Table::Sinai(t) => t.contains_shrunk(p, shrink),
+        }
+    }
+    fn aabb(&self) -> Aabb {
+        match self {
+            Table::Circle(t) => t.aabb(),
+            Table::Rectangle(t) => t.aabb(),
+            Table::Stadium(t) => t.aabb(),
+            Table::Sinai(t) => t.aabb(),
+        }
+    }
+    fn perimeter(&self) -> f64 {
+        match self {
+            Table::Circle(t) => t.perimeter(),
+            Table::Rectangle(t) => t.perimeter(),
+            Table::Stadium(t) => t.perimeter(),
+            Table::Sinai(t) => t.perimeter(),
+        }
+    }
+}
+
+/// Why a table description string could not be read.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum TableSpecError {
+    /// The name before `:` is not a built-in table.
+    #[error("unknown table `{0}` (expected circle, rectangle, stadium or sinai)")]
+    UnknownTable(String),
+    /// A `key=value` pair names a parameter the table does not have.
+    #[error("table `{table}` has no parameter `{key}` (it takes: {allowed})")]
+    UnknownKey {
+        /// Table name.
+        table: &'static str,
+        /// The key given.
+        key: String,
+        /// The keys it takes.
+        allowed: &'static str,
+    },
+    /// A parameter is not written `key=number`.
+    #[error("cannot read `{0}` as key=number")]
+    BadPair(String),
+    /// The numbers do not make a valid table.
+    #[error(transparent)]
+    Geometry(#[from] GeometryError),
+}
+
+impl FromStr for Table {
+    type Err = TableSpecError;
+
+    /// Read `circle`, `circle:R=1`, `rectangle:L=1,H=1`, `stadium:a=1` or
+    /// `sinai:L=2,R=1` (keys are case-insensitive; missing keys take the
+    /// paper's values).
+    fn from_str(spec: &str) -> Result<Self, Self::Err> {
+        let (name, params) = spec.trim().split_once(':').unwrap_or((spec.trim(), ""));
+        let mut pairs = Vec::new();
+        for pair in params.split(',').map(str::trim).filter(|p| !p.is_empty()) {
+            let (k, v) = pair
+                .split_once('=')
+                .ok_or_else(|| TableSpecError::BadPair(pair.to_string()))?;
+            let v: f64 = v
+                .trim()
+                .parse()
+                .map_err(|_| TableSpecError::BadPair(pair.to_string()))?;
+            pairs.push((k.trim().to_ascii_lowercase(), v));
+        }
+        let get = |table: &'static str, allowed: &'static str, key: &str, default: f64| {
+            for (k, _) in &pairs {
+                if !allowed.split(", ").any(|a| a.eq_ignore_ascii_case(k)) {
+                    return Err(TableSpecError::UnknownKey {
+                        table,
+                        key: k.clone(),
+                        allowed,
+                    });
+                }
+            }
+            Ok(pairs
+                .iter()
+                .rev()
+                .find(|(k, _)| k == key)
+                .map_or(default, |(_, v)| *v))
+        };
+        Ok(match name.to_ascii_lowercase().as_str() {
+            "circle" => Circle::new(get("circle", "R", "r", 1.0)?)?.into(),
+            "rectangle" => Rectangle::new(
+                get("rectangle", "L, H", "l", 1.0)?,
+                get("rectangle", "L, H", "h", 1.0)?,
+            )?
+            .into(),
+            "stadium" => Stadium::new(get("stadium", "a", "a", 1.0)?)?.into(),
+            "sinai" => Sinai::new(get("sinai", "L, R", "l", 2.0)?, get("sinai", "L, R", "r", 1.0)?)?
+                .into(),
+            _ => return Err(TableSpecError::UnknownTable(name.to_string())),
+        })
+    }
+}
+
+impl fmt::Display for Table {
+    /// The spec string that [`FromStr`] reads back.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Table::Circle(t) => write!(f, "circle:R={}", t.radius()),
+            Table::Rectangle(t) => write!(f, "rectangle:L={},H={}", t.l(), t.h()),
+            Table::Stadium(t) => write!(f, "stadium:a={}", t.a()),
+            Table::Sinai(t) => write!(f, "sinai:L={},R={}", t.l(), t.r()),
+        }
+    }
+}
