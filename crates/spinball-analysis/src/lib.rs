@@ -1,1 +1,31 @@
-//! placeholder
+//! Chaos indicators for spinning billiards.
+#![cfg_attr(docsrs, feature(doc_cfg))]
+
+mod diagnostics;
+mod ensemble;
+mod error;
+mod ftle;
+mod lyapunov;
+mod parallel;
+mod result;
+mod spectrum;
+mod stats;
+
+#[allow(unused_imports)]
+pub use diagnostics::*;
+#[allow(unused_imports)]
+pub use ensemble::*;
+pub use error::AnalysisError;
+#[allow(unused_imports)]
+pub use ftle::*;
+pub use parallel::{Threads, map_indices};
+pub use lyapunov::{
+    HistoryPoint, Lyapunov, LyapunovOptions, Method, PAPER_DELTA0, largest_lyapunov,
+    random_direction,
+};
+#[allow(unused_imports)]
+pub use result::*;
+#[allow(unused_imports)]
+pub use spectrum::*;
+#[allow(unused_imports)]
+pub use stats::*;

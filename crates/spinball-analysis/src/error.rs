@@ -1,0 +1,72 @@
+//! Why an analysis could not run.
+
+use spinball_core::{LaunchError, SpinLawError, StepError};
+use spinball_geometry::GeometryError;
+use thiserror::Error;
+
+/// An analysis that could not run or finish.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum AnalysisError {
+    /// An option is out of range (zero collisions, `δ0 <= 0`, empty ensemble, ...).
+    #[error("invalid option `{name}`: {reason}")]
+    InvalidOption {
+        /// Name of the option.
+        name: &'static str,
+        /// What is wrong with it.
+        reason: String,
+    },
+    /// The initial state could not be launched.
+    #[error("initial condition {index}: {source}")]
+    Launch {
+        /// Index of the initial condition (0 for single trajectories).
+        index: u64,
+        /// The launch error.
+        source: LaunchError,
+    },
+    /// A collision step failed.
+    #[error("initial condition {index}: {source}")]
+    Step {
+        /// Index of the initial condition (0 for single trajectories).
+        index: u64,
+        /// The step error.
+        source: StepError,
+    },
+    /// Invalid table.
+    #[error(transparent)]
+    Geometry(#[from] GeometryError),
+    /// Invalid spin parameter.
+    #[error(transparent)]
+    SpinLaw(#[from] SpinLawError),
+}
+
+impl AnalysisError {
+    /// Shorthand for [`AnalysisError::InvalidOption`].
+    pub fn invalid(name: &'static str, reason: impl Into<String>) -> Self {
+        AnalysisError::InvalidOption {
+            name,
+            reason: reason.into(),
+        }
+    }
+
+    /// Attach an initial-condition index to a launch or step error.
+    pub fn at_index(self, index: u64) -> Self {
+        match self {
+            AnalysisError::Launch { source, .. } => AnalysisError::Launch { index, source },
+            AnalysisError::Step { source, .. } => AnalysisError::Step { index, source },
+            other => other,
+        }
+    }
+}
+
+impl From<LaunchError> for AnalysisError {
+    fn from(source: LaunchError) -> Self {
+        AnalysisError::Launch { index: 0, source }
+    }
+}
+
+impl From<StepError> for AnalysisError {
+    fn from(source: StepError) -> Self {
+        AnalysisError::Step { index: 0, source }
+    }
+}
