@@ -8,7 +8,7 @@ use crate::error::{LaunchError, StepError};
 use crate::observer::Observer;
 use crate::spin_law::SpinLaw;
 use crate::state::{Ball, State};
-use crate::tangent::{Jacobian, TangentVector, tangent_collision};
+use crate::tangent::{Jacobian, TangentFrame, TangentVector};
 
 /// A spinning billiard: a table `B` and a [`SpinLaw`]. Generic over the table
 /// so every step is statically dispatched and allocation-free.
@@ -171,9 +171,10 @@ impl<B: Boundary> Billiard<B> {
         let hit = self.next_hit(&ball.state)?;
         let (v, u) = self.reflect(ball, &hit);
         let before = ball.state;
+        let frame = TangentFrame::new(&self.law, &hit, &before, v);
         for tv in tangents.iter_mut() {
             tv.dx += tv.dv * hit.time;
-            tangent_collision(&self.law, &hit, &before, v, tv);
+            frame.apply(tv);
         }
         ball.state = State::new(hit.point, v, u);
         Ok(self.record(hit, &before, v, u))

@@ -49,7 +49,7 @@ pub use observer::{EnergyMonitor, Observer, Recorder};
 pub use sampler::{PAPER_SHRINK, PAPER_SPIN_FRACTION, Sampler, UnknownSampler, ic_rng};
 pub use spin_law::SpinLaw;
 pub use state::{Ball, State};
-pub use tangent::{Jacobian, TangentVector, tangent_collision};
+pub use tangent::{Jacobian, TangentFrame, TangentVector, tangent_collision};
 
 pub use rand_pcg::Pcg64;
 pub use spinball_geometry::{Boundary, Hit};

@@ -106,14 +106,20 @@ impl SpinLaw {
         self.alpha > 0.0
     }
 
-    /// The collision for velocity `v` and spin `u` at a wall with tangent `t`
-    /// (half-turn form). `t` need not be exactly unit length: the axis is
-    /// normalised by dividing by `a·a = t·t + α` rather than assuming it is 1,
-    /// so rounding in the wall geometry does not bias the energy.
+    /// The collision for velocity `v` and spin `u` at a wall with unit tangent
+    /// `t` (half-turn form): with `k = 2Q/(1+α) = δ Q`,
+    /// `v' = k t − v` and `u' = −u − k` (`u' = u` at α = 0).
+    ///
+    /// `t` is unit only to rounding. Dividing by `a·a = (t·t + α)/(1+α)`
+    /// instead of assuming 1 would make this single reflection exact, but costs
+    /// a division on the critical path of every collision; the energy error it
+    /// removes is instead removed, together with every other rounding error, by
+    /// the energy-shell restore of [`Billiard::step`](crate::Billiard::step),
+    /// which is what actually stops the drift (a biased or random-walk error
+    /// per collision cannot accumulate when each collision puts `|V|` back).
     #[inline]
     pub fn collide(&self, v: DVec2, u: f64, t: DVec2) -> (DVec2, f64) {
-        let q = v.dot(t) - self.alpha * u;
-        let k = 2.0 * q / (t.length_squared() + self.alpha);
+        let k = (v.dot(t) - self.alpha * u) * self.delta;
         let v_new = t * k - v;
         let u_new = if self.alpha > 0.0 { -u - k } else { u };
         (v_new, u_new)

@@ -133,9 +133,64 @@ impl Jacobian {
     }
 }
 
-/// The collision part of the tangent map, applied in place to a vector that
-/// has already flown to the contact (`δx += τ δv`). `before` is the state at
-/// the contact before the collision, `v_after` the velocity after it.
+/// Everything the tangent map of one collision needs that does not depend on
+/// the tangent vector, computed once per collision (one division) and applied
+/// to as many vectors as are carried.
+#[derive(Debug, Clone, Copy)]
+pub struct TangentFrame {
+    law: SpinLaw,
+    n: DVec2,
+    t: DVec2,
+    vt: f64,
+    inv_vn: f64,
+    jump: DVec2,
+    curvature_dv: DVec2,
+    curvature_du: f64,
+}
+
+impl TangentFrame {
+    /// The frame of a collision at `hit`; `before` is the state at the contact
+    /// before the collision, `v_after` the velocity after it.
+    #[inline]
+    pub fn new(law: &SpinLaw, hit: &Hit, before: &State, v_after: DVec2) -> Self {
+        let n = hit.normal;
+        let t = hit.tangent();
+        let v = before.velocity;
+        let vn = n.dot(v);
+        let vt = t.dot(v);
+        let k = hit.curvature;
+        TangentFrame {
+            law: *law,
+            n,
+            t,
+            vt,
+            inv_vn: 1.0 / vn,
+            jump: v - v_after,
+            curvature_dv: k
+                * (-(1.0 + law.beta()) * (vt * n + vn * t) + law.gamma() * before.spin * n),
+            curvature_du: if law.is_coupled() {
+                k * law.delta() * vn
+            } else {
+                0.0
+            },
+        }
+    }
+
+    /// Apply the collision part of the tangent map in place to a vector that
+    /// has already flown to the contact (`δx += τ δv`).
+    #[inline]
+    pub fn apply(&self, tv: &mut TangentVector) {
+        let dtau = -self.n.dot(tv.dx) * self.inv_vn;
+        let ds = self.t.dot(tv.dx) + self.vt * dtau;
+        tv.dx += self.jump * dtau;
+        let (dv, du) = self.law.collide(tv.dv, tv.du, self.t);
+        tv.dv = dv + ds * self.curvature_dv;
+        tv.du = du + ds * self.curvature_du;
+    }
+}
+
+/// The collision part of the tangent map for a single vector (see
+/// [`TangentFrame`] to apply it to several).
 #[inline]
 pub fn tangent_collision(
     law: &SpinLaw,
@@ -144,21 +199,5 @@ pub fn tangent_collision(
     v_after: DVec2,
     tv: &mut TangentVector,
 ) {
-    let n = hit.normal;
-    let t = hit.tangent();
-    let v = before.velocity;
-    let vn = n.dot(v);
-    let vt = t.dot(v);
-    let dtau = -n.dot(tv.dx) / vn;
-    let ds = t.dot(tv.dx) + vt * dtau;
-    tv.dx += (v - v_after) * dtau;
-    let (dv, du) = law.collide(tv.dv, tv.du, t);
-    let k = hit.curvature;
-    let kds = k * ds;
-    tv.dv = dv + kds * (-(1.0 + law.beta()) * (vt * n + vn * t) + law.gamma() * before.spin * n);
-    tv.du = if law.is_coupled() {
-        du + kds * law.delta() * vn
-    } else {
-        du
-    };
+    TangentFrame::new(law, hit, before, v_after).apply(tv);
 }

@@ -161,22 +161,32 @@ pub fn cast_concave_circle(
     if !(disc >= 0.0 && a > 0.0) {
         return None;
     }
-    let sq = disc.sqrt();
-    // Larger root of a t² + 2 b t + c, written to avoid cancellation.
-    let time = if b <= 0.0 { (sq - b) / a } else { -c / (b + sq) };
-    let time = time.max(0.0);
-    let r = d + velocity * time;
-    let inv = r.length_recip();
-    if !inv.is_finite() {
-        return None;
-    }
-    let radial = r * inv;
+    // Larger root of a t² + 2 b t + c. When b > 0 and c ≈ 0 (a ball on the
+    // circle moving out) this cancels, but only in absolute terms of order
+    // ε|d|/|v|, which is the accuracy of the contact anyway.
+    let time = ((disc.sqrt() - b) / a).max(0.0);
+    let radial = snap_radial(d + velocity * time, radius);
     Some(WallHit {
         time,
         point: center + radial * radius,
         normal: -radial,
         along: 0.0,
     })
+}
+
+/// Unit vector along `r`, which is known to have length `radius` up to
+/// rounding: one Newton step for `1/|r|` (no square root, no division beyond
+/// `1/radius`, which the compiler hoists), with an exact fallback when `r` is
+/// not close to the circle (a ball found off the wall).
+#[inline]
+fn snap_radial(r: DVec2, radius: f64) -> DVec2 {
+    let inv_radius = 1.0 / radius;
+    let rr = r.length_squared() * (inv_radius * inv_radius);
+    if (rr - 1.0).abs() < 1e-8 {
+        r * (inv_radius * (1.5 - 0.5 * rr))
+    } else {
+        r * r.length_recip()
+    }
 }
 
 /// The ball outside the circle `|x - c| = R`: where it first meets it (the
@@ -202,8 +212,7 @@ pub fn cast_convex_circle(
     }
     // Smaller root, c / (-b + sqrt(disc)) is stable for b < 0.
     let time = (c / (disc.sqrt() - b)).max(0.0);
-    let r = d + velocity * time;
-    let radial = r * r.length_recip();
+    let radial = snap_radial(d + velocity * time, radius);
     Some(WallHit {
         time,
         point: center + radial * radius,

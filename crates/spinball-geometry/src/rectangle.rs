@@ -61,23 +61,30 @@ impl Rectangle {
 /// in [`Rectangle`]. Shared with [`Sinai`](crate::Sinai).
 #[inline]
 pub(crate) fn cast_box(l: f64, h: f64, origin: DVec2, v: DVec2) -> Option<Hit> {
-    // Horizontal wall ahead (bottom = 0 or top = 2) and vertical (right = 1 or left = 3).
-    let (t_y, wall_y) = if v.y > 0.0 {
-        ((h - origin.y) / v.y, 2)
-    } else if v.y < 0.0 {
-        ((origin.y + h) / -v.y, 0)
+    // Horizontal wall ahead (bottom = 0 or top = 2) and vertical (right = 1
+    // or left = 3); compare the times dy/|v_y| and dx/|v_x| by cross
+    // multiplication and divide once.
+    let (dy, wall_y) = if v.y > 0.0 {
+        (h - origin.y, 2)
     } else {
-        (f64::INFINITY, 0)
+        (origin.y + h, 0)
     };
-    let (t_x, wall_x) = if v.x > 0.0 {
-        ((l - origin.x) / v.x, 1)
-    } else if v.x < 0.0 {
-        ((origin.x + l) / -v.x, 3)
+    let (dx, wall_x) = if v.x > 0.0 {
+        (l - origin.x, 1)
     } else {
-        (f64::INFINITY, 3)
+        (origin.x + l, 3)
     };
-    let use_y = t_y < t_x || (t_y == t_x && wall_y < wall_x);
-    let (time, wall) = if use_y { (t_y, wall_y) } else { (t_x, wall_x) };
+    let (dy, dx) = (dy.max(0.0), dx.max(0.0));
+    let (avy, avx) = (v.y.abs(), v.x.abs());
+    let (ty, tx) = (dy * avx, dx * avy);
+    let use_y = avy > 0.0 && (avx == 0.0 || ty < tx || (ty == tx && wall_y < wall_x));
+    let (time, wall) = if use_y {
+        (dy / avy, wall_y)
+    } else if avx > 0.0 {
+        (dx / avx, wall_x)
+    } else {
+        return None;
+    };
     if !time.is_finite() {
         return None;
     }

@@ -55,28 +55,31 @@ impl Boundary for Stadium {
     #[inline]
     fn cast(&self, origin: DVec2, v: DVec2) -> Option<Hit> {
         let a = self.a;
-        // Crossing of the line y = ±1 ahead.
-        let x_cross = if v.y != 0.0 {
-            let (time, wall, y, normal) = if v.y > 0.0 {
-                ((1.0 - origin.y) / v.y, 2, 1.0, DVec2::NEG_Y)
+        // Crossing of the line y = ±1 ahead, tested without dividing:
+        // |x_cross| <= a  <=>  |x |v_y| + v_x dist| <= a |v_y|.
+        let side = if v.y != 0.0 {
+            let (dist, wall, y, normal) = if v.y > 0.0 {
+                (1.0 - origin.y, 2, 1.0, DVec2::NEG_Y)
             } else {
-                ((origin.y + 1.0) / -v.y, 0, -1.0, DVec2::Y)
+                (origin.y + 1.0, 0, -1.0, DVec2::Y)
             };
-            let time = time.max(0.0);
-            let x = origin.x + v.x * time;
-            if x.abs() <= a + self.slack {
-                let x = x.clamp(-a, a);
+            let dist = dist.max(0.0);
+            let avy = v.y.abs();
+            let x_scaled = origin.x * avy + v.x * dist;
+            if x_scaled.abs() <= (a + self.slack) * avy {
+                let time = dist / avy;
+                let x = (origin.x + v.x * time).clamp(-a, a);
                 let s = if wall == 0 { x + a } else { 3.0 * a + PI - x };
                 return Some(Hit::new(time, DVec2::new(x, y), normal, 0.0, wall, s));
             }
-            x
+            x_scaled
         } else if v.x != 0.0 {
             v.x
         } else {
             return None;
         };
         // Through a cap: the one on the side of the crossing.
-        let (center, wall, base, from) = if x_cross > 0.0 {
+        let (center, wall, base, from) = if side > 0.0 {
             (DVec2::new(a, 0.0), 1, 2.0 * a, DVec2::NEG_Y)
         } else {
             (DVec2::new(-a, 0.0), 3, 4.0 * a + PI, DVec2::Y)
