@@ -126,7 +126,8 @@ impl ArcSegment {
     /// `slack`).
     #[inline]
     pub fn covers(&self, p: DVec2, slack: f64) -> bool {
-        self.full || self.side * self.chord.perp_dot(p - self.start()) >= -slack * self.chord.length()
+        self.full
+            || self.side * self.chord.perp_dot(p - self.start()) >= -slack * self.chord.length()
     }
 
     /// Where a ball at `origin` with velocity `velocity` meets this arc from
@@ -158,6 +159,14 @@ pub fn cast_concave_circle(
     let b = d.dot(velocity);
     let c = d.length_squared() - radius * radius;
     let disc = b * b - a * c;
+    // A ball on the circle to rounding (c = O(ε R²) > 0) moving almost along
+    // it can get disc < 0 from rounding alone (b² < a c): it touches the wall
+    // at once rather than finding no wall.
+    let disc = if c <= 128.0 * f64::EPSILON * radius * radius {
+        disc.max(0.0)
+    } else {
+        disc
+    };
     if !(disc >= 0.0 && a > 0.0) {
         return None;
     }

@@ -71,10 +71,16 @@ pub trait Boundary {
         let (Some(front), Some(back)) = (self.cast(p, PROBE), self.cast(p, -PROBE)) else {
             return false;
         };
+        let tol = 1e-9 * self.length_scale();
+        // Both hits must lie on the line through `p`: from a point outside, a
+        // cast may return a contact snapped onto a wall somewhere else.
+        let on_line = |hit: &Hit, dir: DVec2| (p + dir * hit.time - hit.point).length() <= tol;
+        if !on_line(&front, PROBE) || !on_line(&back, -PROBE) {
+            return false;
+        }
         let Some(again) = self.cast(back.point, PROBE) else {
             return false;
         };
-        let tol = 1e-9 * self.length_scale();
         (again.point - front.point).length() <= tol
     }
 

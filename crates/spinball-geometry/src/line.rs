@@ -82,10 +82,19 @@ impl LineSegment {
 
     /// Where a ball at `origin` with velocity `velocity` meets this wall, if it
     /// is moving towards it from the table side. `slack` is the length
-    /// tolerance for hits at the wall's ends (they count as hits).
+    /// tolerance for hits at the wall's ends (they count as hits) and for a
+    /// ball found behind the wall by rounding.
     #[inline]
     pub fn cast(&self, origin: DVec2, velocity: DVec2, slack: f64) -> Option<WallHit> {
-        cast_line(self.start, self.dir, self.normal, self.length, origin, velocity, slack)
+        cast_line(
+            self.start,
+            self.dir,
+            self.normal,
+            self.length,
+            origin,
+            velocity,
+            slack,
+        )
     }
 
     /// Signed distance of `p` from the wall's line, positive on the table side.
@@ -99,9 +108,11 @@ impl LineSegment {
 /// inward normal `normal` and length `length` (free function for static
 /// dispatch in the built-in tables).
 ///
-/// Only a ball moving *into* the wall (`v·n < 0`) hits it, so the wall a ball
-/// has just left is never found again. A ball numerically a hair behind the
-/// wall gets flight time 0 and the contact is snapped onto the wall.
+/// Only a ball moving *into* the wall (`v·n < 0`) from its table side hits it,
+/// so the wall a ball has just left is never found again. A ball numerically a
+/// hair behind the wall (within `slack`) gets flight time 0 and the contact is
+/// snapped onto the wall; a ball farther behind it (in a non-convex table, on
+/// the far side of a wall that faces elsewhere) does not hit it.
 #[inline]
 pub fn cast_line(
     start: DVec2,
@@ -118,6 +129,10 @@ pub fn cast_line(
     }
     let rel = origin - start;
     let dist = rel.dot(normal);
+    if dist < -slack {
+        // Behind the wall (on its far side), not a hair behind: never a hit.
+        return None;
+    }
     let time = (dist / -vn).max(0.0);
     let along = (rel + velocity * time).dot(dir);
     if !(along >= -slack && along <= length + slack) {

@@ -159,6 +159,7 @@ impl FromStr for Table {
     /// paper's values).
     fn from_str(spec: &str) -> Result<Self, Self::Err> {
         let (name, params) = spec.trim().split_once(':').unwrap_or((spec.trim(), ""));
+        let name = name.trim();
         let mut pairs = Vec::new();
         for pair in params.split(',').map(str::trim).filter(|p| !p.is_empty()) {
             let (k, v) = pair
@@ -194,8 +195,11 @@ impl FromStr for Table {
             )?
             .into(),
             "stadium" => Stadium::new(get("stadium", "a", "a", 1.0)?)?.into(),
-            "sinai" => Sinai::new(get("sinai", "L, R", "l", 2.0)?, get("sinai", "L, R", "r", 1.0)?)?
-                .into(),
+            "sinai" => Sinai::new(
+                get("sinai", "L, R", "l", 2.0)?,
+                get("sinai", "L, R", "r", 1.0)?,
+            )?
+            .into(),
             _ => return Err(TableSpecError::UnknownTable(name.to_string())),
         })
     }

@@ -1,0 +1,252 @@
+//! Every invalid table description returns its own error variant (never a
+//! table that would produce NaNs or let a ball out).
+
+use std::f64::consts::{PI, TAU};
+
+use spinball_geometry::{
+    ArcSegment, Boundary, Circle, DVec2, GeometryError, LineSegment, Rectangle, Segment,
+    SegmentTable, Sinai, Stadium, Table, TableSpecError,
+};
+
+const BAD_FINITE: [f64; 3] = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY];
+const BAD_SIGN: [f64; 4] = [0.0, -0.0, -1.0, -f64::MIN_POSITIVE];
+
+fn non_finite(e: GeometryError, want: &str) -> bool {
+    matches!(e, GeometryError::NonFinite { name, value } if name == want && !value.is_finite())
+}
+
+fn non_positive(e: GeometryError, want: &str) -> bool {
+    matches!(e, GeometryError::NonPositive { name, value } if name == want && value <= 0.0)
+}
+
+#[test]
+fn built_in_tables_reject_bad_numbers() {
+    for x in BAD_FINITE {
+        assert!(non_finite(Circle::new(x).unwrap_err(), "radius"));
+        assert!(non_finite(Rectangle::new(x, 1.0).unwrap_err(), "l"));
+        assert!(non_finite(Rectangle::new(1.0, x).unwrap_err(), "h"));
+        assert!(non_finite(Stadium::new(x).unwrap_err(), "a"));
+        assert!(non_finite(Sinai::new(x, 1.0).unwrap_err(), "l"));
+        assert!(non_finite(Sinai::new(2.0, x).unwrap_err(), "r"));
+    }
+    for x in BAD_SIGN {
+        assert!(non_positive(Circle::new(x).unwrap_err(), "radius"));
+        assert!(non_positive(Rectangle::new(x, 1.0).unwrap_err(), "l"));
+        assert!(non_positive(Rectangle::new(1.0, x).unwrap_err(), "h"));
+        assert!(non_positive(Stadium::new(x).unwrap_err(), "a"));
+        assert!(non_positive(Sinai::new(x, 1.0).unwrap_err(), "l"));
+        assert!(non_positive(Sinai::new(2.0, x).unwrap_err(), "r"));
+    }
+    // The obstacle must fit strictly inside the box.
+    assert_eq!(
+        Sinai::new(2.0, 2.0).unwrap_err(),
+        GeometryError::ObstacleTooLarge { r: 2.0, l: 2.0 }
+    );
+    assert_eq!(
+        Sinai::new(1.0, 1.5).unwrap_err(),
+        GeometryError::ObstacleTooLarge { r: 1.5, l: 1.0 }
+    );
+    // ... and just inside is fine, as are tiny and huge tables.
+    assert!(Sinai::new(1.0, 1.0 - 1e-12).is_ok());
+    assert!(Circle::new(1e-6).is_ok() && Circle::new(1e6).is_ok());
+}
+
+#[test]
+fn walls_reject_bad_input() {
+    let p = DVec2::new(1.0, 2.0);
+    assert_eq!(
+        LineSegment::new(p, p).unwrap_err(),
+        GeometryError::DegenerateWall { index: 0 }
+    );
+    assert!(non_finite(
+        LineSegment::new(DVec2::new(f64::NAN, 0.0), p).unwrap_err(),
+        "start.x"
+    ));
+    assert!(non_finite(
+        LineSegment::new(p, DVec2::new(0.0, f64::INFINITY)).unwrap_err(),
+        "end.y"
+    ));
+    let c = DVec2::ZERO;
+    for sweep in [0.0, -0.0, 7.0, -7.0, 2.0 * TAU] {
+        assert!(
+            matches!(ArcSegment::new(c, 1.0, 0.0, sweep), Err(GeometryError::BadSweep { sweep: s, .. }) if s == sweep),
+            "sweep {sweep}"
+        );
+    }
+    assert!(non_finite(
+        ArcSegment::new(c, 1.0, 0.0, f64::NAN).unwrap_err(),
+        "sweep"
+    ));
+    assert!(non_finite(
+        ArcSegment::new(c, 1.0, f64::INFINITY, 1.0).unwrap_err(),
+        "start_angle"
+    ));
+    assert!(non_positive(
+        ArcSegment::new(c, 0.0, 0.0, 1.0).unwrap_err(),
+        "radius"
+    ));
+    assert!(non_positive(
+        ArcSegment::new(c, -2.0, 0.0, 1.0).unwrap_err(),
+        "radius"
+    ));
+    assert!(non_finite(
+        ArcSegment::new(DVec2::new(0.0, f64::NAN), 1.0, 0.0, 1.0).unwrap_err(),
+        "center.y"
+    ));
+    // A full turn either way is fine.
+    assert!(ArcSegment::new(c, 1.0, 0.0, TAU).is_ok());
+    assert!(ArcSegment::new(c, 1.0, 0.0, -TAU).is_ok());
+}
+
+fn line(a: (f64, f64), b: (f64, f64)) -> Segment {
+    Segment::Line(LineSegment::new(DVec2::new(a.0, a.1), DVec2::new(b.0, b.1)).unwrap())
+}
+
+fn square_ccw() -> Vec<Segment> {
+    vec![
+        line((0.0, 0.0), (1.0, 0.0)),
+        line((1.0, 0.0), (1.0, 1.0)),
+        line((1.0, 1.0), (0.0, 1.0)),
+        line((0.0, 1.0), (0.0, 0.0)),
+    ]
+}
+
+#[test]
+fn segment_tables_reject_bad_loops() {
+    assert!(SegmentTable::new(square_ccw()).is_ok());
+    // Open loop: the third wall ends short of the fourth's start.
+    let mut open = square_ccw();
+    open[2] = line((1.0, 1.0), (0.0, 0.9));
+    assert!(matches!(
+        SegmentTable::new(open).unwrap_err(),
+        GeometryError::OpenLoop {
+            lp: 0,
+            index: 2,
+            ..
+        }
+    ));
+    // Wrong orientation: the same square listed clockwise.
+    let cw: Vec<Segment> = vec![
+        line((0.0, 0.0), (0.0, 1.0)),
+        line((0.0, 1.0), (1.0, 1.0)),
+        line((1.0, 1.0), (1.0, 0.0)),
+        line((1.0, 0.0), (0.0, 0.0)),
+    ];
+    assert!(matches!(
+        SegmentTable::new(cw).unwrap_err(),
+        GeometryError::WrongOrientation { lp: 0, area } if (area + 1.0).abs() < 1e-15
+    ));
+    // Zero area: out and back along one line.
+    let flat = vec![line((0.0, 0.0), (1.0, 0.0)), line((1.0, 0.0), (0.0, 0.0))];
+    assert!(matches!(
+        SegmentTable::new(flat).unwrap_err(),
+        GeometryError::WrongOrientation { lp: 0, area } if area == 0.0
+    ));
+    // A hole listed counter-clockwise (it would be a second table, not a hole).
+    let hole_ccw = vec![Segment::Arc(
+        ArcSegment::new(DVec2::splat(0.5), 0.2, 0.0, TAU).unwrap(),
+    )];
+    assert!(matches!(
+        SegmentTable::with_holes(square_ccw(), vec![hole_ccw]).unwrap_err(),
+        GeometryError::WrongOrientation { lp: 1, .. }
+    ));
+    let hole_cw = vec![Segment::Arc(
+        ArcSegment::new(DVec2::splat(0.5), 0.2, 0.0, -TAU).unwrap(),
+    )];
+    assert!(SegmentTable::with_holes(square_ccw(), vec![hole_cw]).is_ok());
+    // Too few walls.
+    assert_eq!(
+        SegmentTable::new(vec![]).unwrap_err(),
+        GeometryError::TooFewWalls { needed: 1, got: 0 }
+    );
+    assert_eq!(
+        SegmentTable::new(vec![line((0.0, 0.0), (1.0, 0.0))]).unwrap_err(),
+        GeometryError::TooFewWalls { needed: 2, got: 1 }
+    );
+    assert_eq!(
+        SegmentTable::with_holes(square_ccw(), vec![vec![]]).unwrap_err(),
+        GeometryError::TooFewWalls { needed: 2, got: 0 }
+    );
+    // A single full concave circle is a valid table (a disk).
+    let disk = SegmentTable::new(vec![Segment::Arc(
+        ArcSegment::full_circle(DVec2::ZERO, 1.0).unwrap(),
+    )]);
+    assert!((disk.unwrap().perimeter() - TAU).abs() < 1e-15);
+    // A half disk: arc then diameter.
+    let half = SegmentTable::new(vec![
+        Segment::Arc(ArcSegment::new(DVec2::ZERO, 1.0, 0.0, PI).unwrap()),
+        line((-1.0, 0.0), (1.0, 0.0)),
+    ]);
+    assert!(half.is_ok());
+}
+
+#[test]
+fn polygons_reject_bad_vertices() {
+    let v = DVec2::new;
+    assert_eq!(
+        SegmentTable::polygon(&[v(0.0, 0.0), v(1.0, 0.0)]).unwrap_err(),
+        GeometryError::TooFewWalls { needed: 3, got: 2 }
+    );
+    assert_eq!(
+        SegmentTable::polygon(&[v(0.0, 0.0), v(1.0, 0.0), v(1.0, 0.0), v(0.0, 1.0)]).unwrap_err(),
+        GeometryError::DegenerateWall { index: 1 }
+    );
+    assert!(matches!(
+        SegmentTable::polygon(&[v(0.0, 0.0), v(f64::NAN, 0.0), v(0.0, 1.0)]).unwrap_err(),
+        GeometryError::NonFinite { .. }
+    ));
+    assert!(matches!(
+        SegmentTable::polygon(&[v(0.0, 0.0), v(0.0, 1.0), v(1.0, 0.0)]).unwrap_err(),
+        GeometryError::WrongOrientation { lp: 0, .. }
+    ));
+    assert!(SegmentTable::polygon(&[v(0.0, 0.0), v(1.0, 0.0), v(0.0, 1.0)]).is_ok());
+}
+
+#[test]
+fn table_specs_reject_bad_strings() {
+    let err = |s: &str| s.parse::<Table>().unwrap_err();
+    assert_eq!(
+        err("hexagon"),
+        TableSpecError::UnknownTable("hexagon".into())
+    );
+    assert_eq!(err(""), TableSpecError::UnknownTable("".into()));
+    assert!(matches!(
+        err("stadium:b=1"),
+        TableSpecError::UnknownKey { table: "stadium", ref key, .. } if key == "b"
+    ));
+    assert!(matches!(
+        err("circle:L=1"),
+        TableSpecError::UnknownKey { table: "circle", ref key, .. } if key == "l"
+    ));
+    assert_eq!(err("stadium:a"), TableSpecError::BadPair("a".into()));
+    assert_eq!(
+        err("stadium:a=one"),
+        TableSpecError::BadPair("a=one".into())
+    );
+    assert_eq!(err("sinai:L=2,R"), TableSpecError::BadPair("R".into()));
+    assert_eq!(
+        err("sinai:L=1,R=2"),
+        TableSpecError::Geometry(GeometryError::ObstacleTooLarge { r: 2.0, l: 1.0 })
+    );
+    assert!(matches!(
+        err("circle:R=-1"),
+        TableSpecError::Geometry(GeometryError::NonPositive { name: "radius", .. })
+    ));
+    assert!(matches!(
+        err("rectangle:L=nan"),
+        TableSpecError::Geometry(GeometryError::NonFinite { name: "l", .. })
+    ));
+    assert!(matches!(
+        err("stadium:a=inf"),
+        TableSpecError::Geometry(GeometryError::NonFinite { name: "a", .. })
+    ));
+    // Every message says something.
+    for e in [
+        err("hexagon"),
+        err("stadium:b=1"),
+        err("stadium:a"),
+        err("sinai:L=1,R=2"),
+    ] {
+        assert!(!e.to_string().is_empty());
+    }
+}
