@@ -1,15 +1,15 @@
 //! Chaos indicators for spinning billiards.
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
-mod diagnostics;
-mod ensemble;
-mod error;
-mod ftle;
-mod lyapunov;
-mod parallel;
-mod result;
-mod spectrum;
-mod stats;
+pub mod diagnostics;
+pub mod ensemble;
+pub mod error;
+pub mod ftle;
+pub mod lyapunov;
+pub mod parallel;
+pub mod result;
+pub mod spectrum;
+pub mod stats;
 
 #[allow(unused_imports)]
 pub use diagnostics::*;

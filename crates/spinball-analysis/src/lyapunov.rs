@@ -237,7 +237,7 @@ pub fn largest_lyapunov<B: Boundary, R: Rng + ?Sized>(
     let mut logs = LogSum::new();
     let mut time = 0.0;
     let record = |n: u64, time: f64, logs: &LogSum, history: &mut Vec<HistoryPoint>| {
-        if n % stride == 0 {
+        if n.is_multiple_of(stride) {
             history.push(HistoryPoint {
                 collisions: n,
                 time,

@@ -33,14 +33,14 @@
 //!   and samplers.
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
-mod billiard;
-mod collision;
-mod error;
-mod observer;
-mod sampler;
-mod spin_law;
-mod state;
-mod tangent;
+pub mod billiard;
+pub mod collision;
+pub mod error;
+pub mod observer;
+pub mod sampler;
+pub mod spin_law;
+pub mod state;
+pub mod tangent;
 
 pub use billiard::{Billiard, Run};
 pub use collision::Collision;

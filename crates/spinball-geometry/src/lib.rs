@@ -37,17 +37,17 @@
 //! - `serde`: `Serialize`/`Deserialize` for tables, walls and hits.
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
-mod arc;
-mod boundary;
-mod circle;
-mod error;
-mod hit;
-mod line;
-mod rectangle;
-mod segment_table;
-mod sinai;
-mod stadium;
-mod table;
+pub mod arc;
+pub mod boundary;
+pub mod circle;
+pub mod error;
+pub mod hit;
+pub mod line;
+pub mod rectangle;
+pub mod segment_table;
+pub mod sinai;
+pub mod stadium;
+pub mod table;
 
 pub use arc::{ArcSegment, cast_concave_circle, cast_convex_circle};
 pub use boundary::{Aabb, Boundary};
