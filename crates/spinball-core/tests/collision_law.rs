@@ -68,11 +68,14 @@ proptest! {
 
         // Energy E = ½|v|² + ½αu², conserved by one raw collision (no shell
         // restore) to a few ulps of E: the map is orthogonal in (v, √α u).
+        // Worst case seen over 2e7 random inputs: 9.5 ulps (the collision's
+        // roundings plus those of two energy evaluations); bound 16.
         let e = law.energy(v, u);
         let e2 = law.energy(v2, u2);
-        prop_assert!((e2 - e).abs() <= 8.0 * EPS * e, "dE/E = {}", (e2 - e) / e);
+        prop_assert!((e2 - e).abs() <= 16.0 * EPS * e, "dE/E = {}", (e2 - e) / e);
 
-        // Q = v∥ − αu unchanged (paper eq. 12): few ulps of |v∥| + α|u|.
+        // Q = v∥ − αu unchanged (paper eq. 12): few ulps of |v∥| + α|u|
+        // (worst seen over 2e7 inputs: 4 ulps; components: 7 ulps).
         let q = law.q(v.dot(t), u);
         let q2 = law.q(v2.dot(t), u2);
         let q_scale = v.length() + alpha * u.abs() + f64::MIN_POSITIVE;
@@ -140,7 +143,7 @@ fn named_balls_and_limits() {
     let (v, u) = (DVec2::new(0.3, -0.8), 1e-4);
     let (v2, u2) = stiff.collide(v, u, DVec2::X);
     let e = stiff.energy(v, u);
-    assert!((stiff.energy(v2, u2) - e).abs() <= 8.0 * EPS * e);
+    assert!((stiff.energy(v2, u2) - e).abs() <= 16.0 * EPS * e);
     // α > 1 is only available by asking for it.
     assert_eq!(SpinLaw::new(5.0), Err(SpinLawError::Unphysical(5.0)));
     assert_eq!(SpinLaw::extended(5.0).unwrap().alpha(), 5.0);

@@ -153,7 +153,7 @@ fn other_shapes_never_escape() {
 }
 
 #[test]
-#[ignore = "long: 1e8 collisions per table (about a minute per table in the test profile)"]
+#[ignore = "long: 1e8 collisions per table, 4e8 in all (about a minute in the test profile)"]
 fn hundred_million_collisions_never_escape() {
     for table in paper_tables() {
         let billiard = Billiard::new(table, law(0.5));
