@@ -56,7 +56,9 @@ pub enum GeometryError {
         got: usize,
     },
     /// Consecutive walls of a boundary loop do not meet.
-    #[error("boundary loop {lp} is open: wall {index} ends at ({x1}, {y1}) but the next starts at ({x2}, {y2})")]
+    #[error(
+        "boundary loop {lp} is open: wall {index} ends at ({x1}, {y1}) but the next starts at ({x2}, {y2})"
+    )]
     OpenLoop {
         /// Index of the loop.
         lp: usize,
@@ -72,7 +74,9 @@ pub enum GeometryError {
         y2: f64,
     },
     /// The walls enclose no area, or the outer loop is oriented clockwise.
-    #[error("boundary loop {lp} must enclose the table counter-clockwise (outer loop) or clockwise (holes); signed area {area}")]
+    #[error(
+        "boundary loop {lp} must enclose the table counter-clockwise (outer loop) or clockwise (holes); signed area {area}"
+    )]
     WrongOrientation {
         /// Index of the loop.
         lp: usize,

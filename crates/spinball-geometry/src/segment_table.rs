@@ -142,7 +142,10 @@ impl SegmentTable {
     /// begins (within `1e-9` of the table size), [`GeometryError::WrongOrientation`]
     /// for an outer loop that is not counter-clockwise or a hole that is not
     /// clockwise.
-    pub fn with_holes(outer: Vec<Segment>, holes: Vec<Vec<Segment>>) -> Result<Self, GeometryError> {
+    pub fn with_holes(
+        outer: Vec<Segment>,
+        holes: Vec<Vec<Segment>>,
+    ) -> Result<Self, GeometryError> {
         let loops: Vec<&Vec<Segment>> = std::iter::once(&outer).chain(holes.iter()).collect();
         let mut aabb: Option<Aabb> = None;
         for lp in &loops {

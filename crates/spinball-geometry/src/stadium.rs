@@ -97,7 +97,10 @@ impl Boundary for Stadium {
     }
 
     fn aabb(&self) -> Aabb {
-        Aabb::new(DVec2::new(-self.a - 1.0, -1.0), DVec2::new(self.a + 1.0, 1.0))
+        Aabb::new(
+            DVec2::new(-self.a - 1.0, -1.0),
+            DVec2::new(self.a + 1.0, 1.0),
+        )
     }
 
     fn perimeter(&self) -> f64 {
