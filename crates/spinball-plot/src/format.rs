@@ -1,0 +1,68 @@
+//! Tick labels that read like a paper: `0.25`, `5000`, `10⁻¹⁵`, `2×10⁶`.
+
+/// Format a tick value: plain decimals between `1e-3` and `1e5` (trailing
+/// zeros and rounding noise dropped), powers of ten as `10ⁿ` and other large
+/// or small values as `m×10ⁿ`.
+pub fn format_tick(v: f64) -> String {
+    if !v.is_finite() {
+        return String::new();
+    }
+    if v == 0.0 {
+        return "0".to_string();
+    }
+    let a = v.abs();
+    if (1e-3..1e5).contains(&a) {
+        let s = format!("{v:.6}");
+        let s = s.trim_end_matches('0').trim_end_matches('.');
+        return if s == "-0" {
+            "0".to_string()
+        } else {
+            s.to_string()
+        };
+    }
+    let mut e = a.log10().floor() as i32;
+    let mut m = v / 10f64.powi(e);
+    if (m.abs() - 10.0).abs() < 1e-9 {
+        e += 1;
+        m /= 10.0;
+    }
+    let pow = format!("10{}", superscript(e));
+    if (m.abs() - 1.0).abs() < 1e-9 {
+        if m < 0.0 { format!("−{pow}") } else { pow }
+    } else {
+        let ms = format!("{m:.2}");
+        let ms = ms.trim_end_matches('0').trim_end_matches('.');
+        format!("{ms}×{pow}")
+    }
+}
+
+/// `n` in superscript digits (`−15` → `⁻¹⁵`).
+pub(crate) fn superscript(n: i32) -> String {
+    const DIGITS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let mut s = String::new();
+    if n < 0 {
+        s.push('⁻');
+    }
+    for c in n.unsigned_abs().to_string().chars() {
+        s.push(DIGITS[c.to_digit(10).unwrap_or(0) as usize]);
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ticks() {
+        assert_eq!(format_tick(0.0), "0");
+        assert_eq!(format_tick(0.1 + 0.2), "0.3");
+        assert_eq!(format_tick(0.25), "0.25");
+        assert_eq!(format_tick(5000.0), "5000");
+        assert_eq!(format_tick(-1.5), "-1.5");
+        assert_eq!(format_tick(1e-15), "10⁻¹⁵");
+        assert_eq!(format_tick(1e6), "10⁶");
+        assert_eq!(format_tick(2.5e6), "2.5×10⁶");
+        assert_eq!(format_tick(f64::NAN), "");
+    }
+}

@@ -1,0 +1,80 @@
+//! Plots for [spinball](https://docs.rs/spinball): the pictures a physicist
+//! puts in a talk, drawn to PNG with a bundled font and no system libraries.
+//!
+//! The crate is small on purpose. It draws five things, each a [`Plot`]:
+//! - [`TablePlot`]: a table outline (any built-in [`Table`] or a
+//!   [`SegmentTable`]), optionally with a trajectory coloured from early to
+//!   late by the [`viridis`] colormap;
+//! - [`LinePlot`]: curves of [`Series`] with error bars, shaded min–max bands,
+//!   reference lines, a legend and linear or logarithmic axes (λ(α) curves,
+//!   energy traces, convergence traces);
+//! - [`Histogram`]: a histogram with vertical [`Marker`] lines (mean, median,
+//!   conditional mean) and a legend;
+//! - [`Grid`]: panels side by side (for example 4 tables × 4 values of α),
+//!   with an optional shared [`Colorbar`].
+//!
+//! [`cli::FigureArgs`] parses the `--out/--quick/--paper/--seed` arguments the
+//! figure examples share.
+//!
+//! ```no_run
+//! use spinball_geometry::{DVec2, Stadium};
+//! use spinball_plot::{LinePlot, Plot, Series, TablePlot};
+//!
+//! let stadium = Stadium::new(1.0)?;
+//! let path = vec![DVec2::new(0.0, 0.0), DVec2::new(1.5, 0.8), DVec2::new(-1.0, -1.0)];
+//! TablePlot::new(&stadium)
+//!     .title("stadium a = 1")
+//!     .trajectory(path)
+//!     .save_png("out/stadium.png", 1200, 700)?;
+//!
+//! LinePlot::new()
+//!     .x_label("spin parameter α = I/(m r²)")
+//!     .y_label("λ (1/time)")
+//!     .series(Series::new("stadium", [(0.0, 0.43), (0.5, 0.18), (1.0, 0.15)]).errors([0.01, 0.01, 0.01]))
+//!     .save_png("out/lambda.png", 1200, 800)?;
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! # Conventions
+//! - Sizes are in pixels. [`Style::for_size`] picks font sizes from the image
+//!   size so that text is at least 16 px (titles ~30 px, axis labels ~26 px,
+//!   ticks ~22 px at 1200 px width).
+//! - Bad data never panics: non-finite points are skipped (and non-positive
+//!   ones on a log axis), a line is broken where points are missing, and a
+//!   plot with nothing left to draw is a [`PlotError::EmptyData`].
+//! - Colours come from one colour-blind-safe [`palette`] (Okabe–Ito) and one
+//!   sequential map ([`viridis`]), so figures look alike.
+//!
+//! # Font
+//! Text is rendered with DejaVu Sans, bundled through the `dejavu` crate and
+//! registered with plotters' pure-Rust `ab_glyph` renderer (see [`font`]); no
+//! fontconfig, freetype or other system library is needed.
+
+mod colormap;
+mod error;
+pub mod font;
+mod format;
+mod grid;
+mod histogram;
+mod lines;
+mod outline;
+mod plot;
+mod style;
+mod table_plot;
+
+pub mod cli;
+
+pub use colormap::{PALETTE, palette, viridis};
+pub use error::PlotError;
+pub use format::format_tick;
+pub use grid::{Colorbar, Grid, Panel};
+pub use histogram::{Histogram, Marker};
+pub use lines::{Legend, LineKind, LinePlot, Series};
+pub use outline::{ARC_POINTS_PER_TURN, Loop, Outline, ToOutline};
+pub use plot::{Plot, render_png};
+pub use style::Style;
+pub use table_plot::TablePlot;
+
+pub use plotters;
+pub use plotters::style::RGBColor;
+pub use spinball_geometry::{DVec2, SegmentTable, Table};

@@ -1,0 +1,193 @@
+//! A table, and optionally a trajectory on it coloured from early to late.
+
+use glam::DVec2;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+use crate::colormap::viridis;
+use crate::error::PlotError;
+use crate::font;
+use crate::format::format_tick;
+use crate::outline::{Outline, ToOutline};
+use crate::plot::{Plot, inner_size, titled};
+use crate::style::Style;
+
+/// Fill of the table's interior.
+const TABLE_FILL: RGBColor = RGBColor(0xF4, 0xF5, 0xF8);
+/// Fill of obstacles (holes).
+const OBSTACLE_FILL: RGBColor = RGBColor(0xC8, 0xCB, 0xD2);
+
+/// A table drawn to scale (equal aspect), with an optional trajectory.
+///
+/// The trajectory is the polyline through the given points (the start and
+/// the collision points, in order); the leg from point `i` to `i + 1` is
+/// coloured [`viridis`]`(i / (n − 2))`, dark early and light late, and the
+/// start is marked with a black dot. Legs with a non-finite end are skipped.
+///
+/// ```no_run
+/// use spinball_geometry::{DVec2, Sinai};
+/// use spinball_plot::{Plot, TablePlot};
+/// let path = [DVec2::new(-1.5, -1.5), DVec2::new(2.0, 0.3), DVec2::new(0.5, 2.0)];
+/// TablePlot::new(&Sinai::new(2.0, 1.0)?)
+///     .title("Sinai L = 2, R = 1")
+///     .trajectory(path)
+///     .axes(true)
+///     .save_png("out/sinai.png", 900, 900)?;
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct TablePlot {
+    outline: Outline,
+    trajectory: Option<Vec<DVec2>>,
+    title: Option<String>,
+    axes: bool,
+}
+
+impl TablePlot {
+    /// The outline of `table` (a built-in table, a `Table`, a `SegmentTable`
+    /// or an [`Outline`]).
+    pub fn new(table: &impl ToOutline) -> Self {
+        TablePlot {
+            outline: table.outline(),
+            trajectory: None,
+            title: None,
+            axes: false,
+        }
+    }
+
+    /// A title above the table.
+    pub fn title(mut self, title: impl Into<String>) -> Self {
+        self.title = Some(title.into());
+        self
+    }
+
+    /// The trajectory: start point then collision points, in order.
+    pub fn trajectory(mut self, points: impl IntoIterator<Item = DVec2>) -> Self {
+        self.trajectory = Some(points.into_iter().collect());
+        self
+    }
+
+    /// Draw x and y axes with ticks (off by default: a table needs none).
+    pub fn axes(mut self, on: bool) -> Self {
+        self.axes = on;
+        self
+    }
+
+    fn finite_trajectory_points(&self) -> usize {
+        self.trajectory
+            .as_ref()
+            .map_or(0, |t| t.iter().filter(|p| p.is_finite()).count())
+    }
+}
+
+impl Plot for TablePlot {
+    fn validate(&self) -> Result<(), PlotError> {
+        let outline_ok = self
+            .outline
+            .loops()
+            .iter()
+            .any(|l| l.points().len() >= 2 && l.points().iter().all(|p| p.is_finite()));
+        if !outline_ok {
+            return Err(PlotError::EmptyData("table outline".into()));
+        }
+        if self.trajectory.is_some() && self.finite_trajectory_points() < 2 {
+            return Err(PlotError::EmptyData("trajectory".into()));
+        }
+        Ok(())
+    }
+
+    fn draw<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        style: &Style,
+    ) -> Result<(), PlotError> {
+        self.validate()?;
+        font::ensure()?;
+        let area = titled(area, self.title.as_deref(), style.title_px)?;
+        let (mut lo, mut hi) = self
+            .outline
+            .bounds()
+            .ok_or_else(|| PlotError::EmptyData("table outline".into()))?;
+        for p in self.trajectory.iter().flatten().filter(|p| p.is_finite()) {
+            lo = lo.min(*p);
+            hi = hi.max(*p);
+        }
+        let pad = 0.03 * (hi - lo).max_element().max(f64::MIN_POSITIVE);
+        let (lo, hi) = (lo - pad, hi + pad);
+        let (left, bottom) = if self.axes {
+            (style.y_label_area(4), style.x_label_area())
+        } else {
+            (0, 0)
+        };
+        let margin = style.margin / 2;
+        let (pw, ph) = inner_size(&area, margin, left, bottom)?;
+        // Equal aspect: one length unit is the same number of pixels on both axes.
+        let scale = (pw as f64 / (hi.x - lo.x)).min(ph as f64 / (hi.y - lo.y));
+        let c = 0.5 * (lo + hi);
+        let half = 0.5 * DVec2::new(pw as f64, ph as f64) / scale;
+        let mut chart = ChartBuilder::on(&area)
+            .margin(margin)
+            .x_label_area_size(bottom)
+            .y_label_area_size(left)
+            .build_cartesian_2d(c.x - half.x..c.x + half.x, c.y - half.y..c.y + half.y)?;
+        if self.axes {
+            let tick = (font::FAMILY, style.tick_px).into_font();
+            chart
+                .configure_mesh()
+                .disable_mesh()
+                .x_desc("x")
+                .y_desc("y")
+                .label_style(tick)
+                .axis_desc_style((font::FAMILY, style.label_px).into_font())
+                .x_label_formatter(&|v| format_tick(*v))
+                .y_label_formatter(&|v| format_tick(*v))
+                .axis_style(BLACK.stroke_width(1))
+                .draw()?;
+        }
+        let xy = |p: &DVec2| (p.x, p.y);
+        for lp in self.outline.loops().iter().filter(|l| !l.is_hole()) {
+            chart.draw_series(std::iter::once(Polygon::new(
+                lp.points().iter().map(xy).collect::<Vec<_>>(),
+                TABLE_FILL.filled(),
+            )))?;
+        }
+        for lp in self.outline.loops().iter().filter(|l| l.is_hole()) {
+            chart.draw_series(std::iter::once(Polygon::new(
+                lp.points().iter().map(xy).collect::<Vec<_>>(),
+                OBSTACLE_FILL.filled(),
+            )))?;
+        }
+        if let Some(path) = &self.trajectory {
+            let legs = path.len().saturating_sub(1);
+            let denom = legs.saturating_sub(1).max(1) as f64;
+            let width = style.line_width.div_ceil(2);
+            chart.draw_series(
+                path.windows(2)
+                    .enumerate()
+                    .filter(|(_, w)| w[0].is_finite() && w[1].is_finite())
+                    .map(|(i, w)| {
+                        PathElement::new(
+                            vec![xy(&w[0]), xy(&w[1])],
+                            viridis(i as f64 / denom).stroke_width(width),
+                        )
+                    }),
+            )?;
+        }
+        for lp in self.outline.loops() {
+            chart.draw_series(std::iter::once(PathElement::new(
+                lp.points().iter().map(xy).collect::<Vec<_>>(),
+                BLACK.stroke_width(style.line_width.max(2)),
+            )))?;
+        }
+        if let Some(start) = self.trajectory.iter().flatten().find(|p| p.is_finite()) {
+            let r = style.marker_radius;
+            chart.draw_series(std::iter::once(Circle::new(
+                xy(start),
+                r + 2,
+                WHITE.filled(),
+            )))?;
+            chart.draw_series(std::iter::once(Circle::new(xy(start), r, BLACK.filled())))?;
+        }
+        Ok(())
+    }
+}
