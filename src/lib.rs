@@ -59,7 +59,9 @@ pub use spinball_geometry as geometry;
 /// The names most programs need: `use spinball::prelude::*;`.
 pub mod prelude {
     pub use spinball_analysis::{
-        AnalysisError, Lyapunov, LyapunovOptions, Method, Threads, largest_lyapunov,
+        AnalysisError, Ensemble, FtleDistribution, Lyapunov, LyapunovEstimate, LyapunovOptions,
+        Method, Spectrum, SpectrumOptions, StopReason, StopRule, Threads, largest_lyapunov,
+        lyapunov_spectrum,
     };
     pub use spinball_core::{
         Ball, Billiard, Collision, EnergyMonitor, Observer, Recorder, Sampler, SpinLaw, State,
