@@ -1,0 +1,60 @@
+//! Why a lane run could not start or finish.
+
+use spinball_core::LaunchError;
+use thiserror::Error;
+
+use crate::isa::Isa;
+
+/// A lane run that could not start or finish.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum LanesError {
+    /// The instruction set asked for is not supported by this CPU.
+    #[error("instruction set `{0}` is not available on this CPU (available: {avail})", avail = available())]
+    IsaUnavailable(Isa),
+    /// An option or input is out of range.
+    #[error("invalid option `{name}`: {reason}")]
+    InvalidOption {
+        /// Name of the option.
+        name: &'static str,
+        /// What is wrong with it.
+        reason: String,
+    },
+    /// An initial state could not be launched (as `Billiard::launch`).
+    #[error("initial condition {index}: {source}")]
+    Launch {
+        /// Position of the initial condition in the input slice.
+        index: usize,
+        /// The launch error.
+        source: LaunchError,
+    },
+    /// A trajectory (or its shadow or tangent vectors) became non-finite: no
+    /// wall ahead, a shadow separation of zero, or a vector that collapsed.
+    /// Where the scalar path fails it fails too; run that initial condition
+    /// through the scalar path for the exact step and reason.
+    #[error(
+        "initial condition {index}: the trajectory, its shadow or its tangent vectors became non-finite (run it through the scalar path for the failing step)"
+    )]
+    NonFinite {
+        /// Position of the initial condition in the input slice.
+        index: usize,
+    },
+}
+
+impl LanesError {
+    /// Shorthand for [`LanesError::InvalidOption`].
+    pub fn invalid(name: &'static str, reason: impl Into<String>) -> Self {
+        LanesError::InvalidOption {
+            name,
+            reason: reason.into(),
+        }
+    }
+}
+
+fn available() -> String {
+    Isa::available()
+        .iter()
+        .map(|i| i.name())
+        .collect::<Vec<_>>()
+        .join(", ")
+}

@@ -1,0 +1,367 @@
+//! The four kernels: plain trajectory, finite-difference Benettin, exact
+//! tangent, exact spectrum. Each runs `N` initial conditions in lockstep.
+//!
+//! A kernel loads `L::N` initial conditions into structure-of-arrays [`Lanes`],
+//! runs all collisions with the state in registers, and writes `N` outcomes.
+//! [`run_chunks`] feeds it a slice of any length: the last, partial chunk is
+//! padded with copies of its last initial condition whose results are
+//! dropped. Lanes never interact, so an outcome depends only on its own
+//! initial condition — not on the lane count, the chunking, the thread count
+//! or the instruction set.
+
+use spinball_core::{State, TangentVector};
+
+use crate::dynamics::{Balls, Law, LogProduct, Shell, TangentStep, pow2_renormalise, step};
+use crate::geom::Geom;
+use crate::isa::{Isa, dispatch};
+use crate::lanes::{BitsOps, Lanes, MAX_LANES, MaskOps};
+use crate::outcome::{Flight, SpectrumStretch, Stretch};
+
+/// A computation over `N` trajectories at once.
+pub(crate) trait Kernel: Sync {
+    /// Per-initial-condition input.
+    type In: Copy + Send + Sync;
+    /// Per-initial-condition output.
+    type Out: Copy + Send;
+    /// Run `L::N` initial conditions (`ins.len() == L::N`), pushing their
+    /// outcomes onto `out`.
+    fn chunk<G: Geom, L: Lanes>(
+        &self,
+        g: &G,
+        law: &Law,
+        ins: &[Self::In],
+        out: &mut Vec<Self::Out>,
+    );
+    /// Whether an output is sound (finite throughout).
+    fn is_sound(out: &Self::Out) -> bool;
+    /// Run over a slice at instruction-set level `isa` (which the caller has
+    /// checked is available), with this kernel's lane counts.
+    fn dispatch<G: Geom>(&self, isa: Isa, g: &G, law: &Law, ins: &[Self::In]) -> Vec<Self::Out>;
+}
+
+/// Run `k` over `ins` in chunks of `L::N` lanes, results in input order.
+#[inline(always)]
+pub(crate) fn run_chunks<G: Geom, K: Kernel, L: Lanes>(
+    g: &G,
+    law: &Law,
+    k: &K,
+    ins: &[K::In],
+) -> Vec<K::Out> {
+    const { assert!(L::N <= MAX_LANES) };
+    let mut out = Vec::with_capacity(ins.len() + L::N);
+    for c in ins.chunks(L::N) {
+        if c.len() == L::N {
+            k.chunk::<G, L>(g, law, c, &mut out);
+        } else {
+            let last = c[c.len() - 1];
+            let padded: Vec<K::In> = (0..L::N)
+                .map(|j| c.get(j).copied().unwrap_or(last))
+                .collect();
+            k.chunk::<G, L>(g, law, &padded, &mut out);
+            out.truncate(out.len() - (L::N - c.len()));
+        }
+    }
+    out
+}
+
+/// `[f(0), …, f(4)]`, spelt out (see `lanes::each!` on `std::array::from_fn`).
+#[inline(always)]
+fn five<T>(f: impl Fn(usize) -> T) -> [T; 5] {
+    [f(0), f(1), f(2), f(3), f(4)]
+}
+
+/// `(x, y, vx, vy, u)` of `L::N` states.
+#[inline(always)]
+fn load_states<L: Lanes>(s: impl Fn(usize) -> State) -> [L; 5] {
+    let mut z = [[0.0; MAX_LANES]; 5];
+    for i in 0..L::N {
+        for (zc, x) in z.iter_mut().zip(s(i).to_array()) {
+            zc[i] = x;
+        }
+    }
+    five(|c| L::load(&z[c]))
+}
+
+/// The five components of `L::N` tangent vectors.
+#[inline(always)]
+fn load_vectors<L: Lanes>(v: impl Fn(usize) -> TangentVector) -> [L; 5] {
+    load_states(|i| State::from_array(v(i).to_array()))
+}
+
+/// Lane `i` of a state.
+fn state_of<L: Lanes>(z: &[L; 5], i: usize) -> State {
+    State::from_array(z.map(|c| c.lane(i)))
+}
+
+/// Lanes where all of `z` is finite.
+#[inline(always)]
+fn all_finite<L: Lanes>(z: &[L]) -> L::Mask {
+    z.iter()
+        .fold(L::splat(0.0).eq(L::splat(0.0)), |m, c| m.and(c.is_finite()))
+}
+
+/// Whether lane `i` of a mask is set (outside hot loops).
+fn mask_lane<L: Lanes>(m: L::Mask, i: usize) -> bool {
+    L::select(m, L::splat(1.0), L::splat(0.0)).lane(i) == 1.0
+}
+
+/// `TangentVector::dot`, in its order.
+#[inline(always)]
+fn dot<L: Lanes>(a: &[L; 5], b: &[L; 5]) -> L {
+    ((a[0] * b[0] + a[1] * b[1]) + (a[2] * b[2] + a[3] * b[3])) + a[4] * b[4]
+}
+
+/// The plain collision map (`Billiard::step`, repeated).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Plain {
+    pub collisions: u64,
+}
+
+impl Kernel for Plain {
+    type In = State;
+    type Out = Flight;
+
+    #[inline(always)]
+    fn chunk<G: Geom, L: Lanes>(&self, g: &G, law: &Law, ins: &[State], out: &mut Vec<Flight>) {
+        let mut b = Balls::<L>::new(load_states(|i| ins[i]));
+        let shell = Shell::Fixed(b.inv_shell(law));
+        let mut time = L::splat(0.0);
+        for _ in 0..self.collisions {
+            time = time + step(g, law, &mut b, shell).hit.time;
+        }
+        let z = b.coords();
+        out.extend((0..L::N).map(|i| Flight {
+            end: state_of(&z, i),
+            time: time.lane(i),
+            collisions: self.collisions,
+        }));
+    }
+
+    fn dispatch<G: Geom>(&self, isa: Isa, g: &G, law: &Law, ins: &[Self::In]) -> Vec<Self::Out> {
+        dispatch!(isa, g, law, self, ins; avx512 = Wide<Avx512, 3>, avx2 = Wide<Avx2, 2>, sse2 = Wide<Sse2, 2>, portable = Wide<f64, 4>)
+    }
+
+    fn is_sound(o: &Flight) -> bool {
+        o.time.is_finite() && o.end.to_array().iter().all(|x| x.is_finite())
+    }
+}
+
+/// The paper's finite-difference Benettin method (`largest_lyapunov` with
+/// `Method::FiniteDifference`): reference and shadow each take their own
+/// collision (bitwise the scalar steps), the 5-D separation is measured and
+/// the shadow put back `δ0` from the reference along it.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct FiniteDifference {
+    pub collisions: u64,
+    pub delta0: f64,
+}
+
+impl Kernel for FiniteDifference {
+    type In = (State, TangentVector);
+    type Out = Stretch;
+
+    #[inline(always)]
+    fn chunk<G: Geom, L: Lanes>(
+        &self,
+        g: &G,
+        law: &Law,
+        ins: &[(State, TangentVector)],
+        out: &mut Vec<Stretch>,
+    ) {
+        let delta0 = self.delta0;
+        let inv_delta0 = 1.0 / delta0;
+        let z0 = load_states::<L>(|i| ins[i].0);
+        let d0 = load_vectors::<L>(|i| ins[i].1);
+        let mut r = Balls::new(z0);
+        let shell = Shell::Fixed(r.inv_shell(law));
+        let mut s = Balls::new(five(|c| z0[c] + d0[c] * delta0));
+        let mut logs = LogProduct::new();
+        let mut time = L::splat(0.0);
+        for _ in 0..self.collisions {
+            step(g, law, &mut s, Shell::Own);
+            time = time + step(g, law, &mut r, shell).hit.time;
+            let zr = r.coords();
+            let zs = s.coords();
+            let d: [L; 5] = five(|c| zs[c] - zr[c]);
+            let dist = dot(&d, &d).sqrt();
+            // Σ ln(δ/δ0), one `ln` at the end; the scalar divides by δ0.
+            logs.push(dist * inv_delta0);
+            let k = L::splat(delta0) / dist;
+            s = Balls::new(five(|c| zr[c] + d[c] * k));
+        }
+        let ok = all_finite(&s.coords()).and(time.is_finite());
+        let z = r.coords();
+        out.extend((0..L::N).map(|i| Stretch {
+            log_stretch: if mask_lane::<L>(ok, i) {
+                logs.ln(i)
+            } else {
+                f64::NAN
+            },
+            time: time.lane(i),
+            collisions: self.collisions,
+            end: state_of(&z, i),
+        }));
+    }
+
+    fn dispatch<G: Geom>(&self, isa: Isa, g: &G, law: &Law, ins: &[Self::In]) -> Vec<Self::Out> {
+        dispatch!(isa, g, law, self, ins; avx512 = Wide<Avx512, 2>, avx2 = Wide<Avx2, 1>, sse2 = Wide<Sse2, 2>, portable = Wide<f64, 4>)
+    }
+
+    fn is_sound(o: &Stretch) -> bool {
+        o.log_stretch.is_finite()
+            && o.time.is_finite()
+            && o.end.to_array().iter().all(|x| x.is_finite())
+    }
+}
+
+/// Steps between exact power-of-two renormalisations of a tangent vector.
+/// A vector grows by `e^λτ` per step, by more at near-grazing hits on curved
+/// walls; eight steps stay far inside the `f64` range.
+const RENORM_EVERY: u64 = 8;
+
+/// Exact tangent dynamics for the largest exponent (`largest_lyapunov` with
+/// `Method::Tangent`): one tangent vector, renormalised rarely and by powers
+/// of two; `Σ ln` is `ln |δ_final|` plus the powers taken off.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Tangent {
+    pub collisions: u64,
+}
+
+impl Kernel for Tangent {
+    type In = (State, TangentVector);
+    type Out = Stretch;
+
+    #[inline(always)]
+    fn chunk<G: Geom, L: Lanes>(
+        &self,
+        g: &G,
+        law: &Law,
+        ins: &[(State, TangentVector)],
+        out: &mut Vec<Stretch>,
+    ) {
+        let mut r = Balls::<L>::new(load_states(|i| ins[i].0));
+        let shell = Shell::Fixed(r.inv_shell(law));
+        let mut v = load_vectors::<L>(|i| ins[i].1);
+        let mut time = L::splat(0.0);
+        let mut e = L::Bits::splat(0);
+        let mut renorms = 0u64;
+        let mut left = self.collisions;
+        while left > 0 {
+            let run = left.min(RENORM_EVERY);
+            for _ in 0..run {
+                let st = step(g, law, &mut r, shell);
+                time = time + st.hit.time;
+                TangentStep::new::<G>(law, &st, &r).apply::<G>(law, &mut v);
+            }
+            e = e.add(pow2_renormalise(&mut v));
+            renorms += 1;
+            left -= run;
+        }
+        let ok = all_finite(&v).and(time.is_finite());
+        let norm = dot(&v, &v).sqrt();
+        let z = r.coords();
+        out.extend((0..L::N).map(|i| {
+            let k = e.lane(i).wrapping_sub(1023u64.wrapping_mul(renorms)) as i64;
+            Stretch {
+                log_stretch: if mask_lane::<L>(ok, i) {
+                    norm.lane(i).ln() + k as f64 * std::f64::consts::LN_2
+                } else {
+                    f64::NAN
+                },
+                time: time.lane(i),
+                collisions: self.collisions,
+                end: state_of(&z, i),
+            }
+        }));
+    }
+
+    fn dispatch<G: Geom>(&self, isa: Isa, g: &G, law: &Law, ins: &[Self::In]) -> Vec<Self::Out> {
+        dispatch!(isa, g, law, self, ins; avx512 = Wide<Avx512, 2>, avx2 = Wide<Avx2, 2>, sse2 = Wide<Sse2, 2>, portable = Wide<f64, 4>)
+    }
+
+    fn is_sound(o: &Stretch) -> bool {
+        <FiniteDifference as Kernel>::is_sound(o)
+    }
+}
+
+/// Exact tangent dynamics of five vectors with modified Gram–Schmidt every
+/// `qr_interval` collisions and after the last (as `lyapunov_spectrum` with
+/// `Method::Tangent`).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Spectrum {
+    pub collisions: u64,
+    pub qr_interval: u64,
+}
+
+impl Kernel for Spectrum {
+    type In = (State, [TangentVector; 5]);
+    type Out = SpectrumStretch;
+
+    #[inline(always)]
+    fn chunk<G: Geom, L: Lanes>(
+        &self,
+        g: &G,
+        law: &Law,
+        ins: &[(State, [TangentVector; 5])],
+        out: &mut Vec<SpectrumStretch>,
+    ) {
+        let mut r = Balls::<L>::new(load_states(|i| ins[i].0));
+        let shell = Shell::Fixed(r.inv_shell(law));
+        let mut v: [[L; 5]; 5] = five(|j| load_vectors(|i| ins[i].1[j]));
+        let mut logs = [LogProduct::<L>::new(); 5];
+        let mut time = L::splat(0.0);
+        let mut left = self.collisions;
+        while left > 0 {
+            let run = left.min(self.qr_interval);
+            for _ in 0..run {
+                let st = step(g, law, &mut r, shell);
+                time = time + st.hit.time;
+                let ts = TangentStep::new::<G>(law, &st, &r);
+                for z in v.iter_mut() {
+                    ts.apply::<G>(law, z);
+                }
+            }
+            // Modified Gram–Schmidt, as the scalar `gram_schmidt`.
+            for i in 0..5 {
+                for j in 0..i {
+                    let p = dot(&v[i], &v[j]);
+                    let vj = v[j];
+                    for (a, b) in v[i].iter_mut().zip(vj) {
+                        *a = *a - b * p;
+                    }
+                }
+                let n = dot(&v[i], &v[i]).sqrt();
+                let inv = L::splat(1.0) / n;
+                for a in v[i].iter_mut() {
+                    *a = *a * inv;
+                }
+                logs[i].push(n);
+            }
+            left -= run;
+        }
+        let ok = v.iter().fold(time.is_finite(), |m, z| m.and(all_finite(z)));
+        let z = r.coords();
+        out.extend((0..L::N).map(|i| SpectrumStretch {
+            log_stretch: std::array::from_fn(|j| {
+                if mask_lane::<L>(ok, i) {
+                    logs[j].ln(i)
+                } else {
+                    f64::NAN
+                }
+            }),
+            time: time.lane(i),
+            collisions: self.collisions,
+            end: state_of(&z, i),
+        }));
+    }
+
+    fn dispatch<G: Geom>(&self, isa: Isa, g: &G, law: &Law, ins: &[Self::In]) -> Vec<Self::Out> {
+        dispatch!(isa, g, law, self, ins; avx512 = Avx512, avx2 = Avx2, sse2 = Sse2, portable = Wide<f64, 2>)
+    }
+
+    fn is_sound(o: &SpectrumStretch) -> bool {
+        o.log_stretch.iter().all(|x| x.is_finite())
+            && o.time.is_finite()
+            && o.end.to_array().iter().all(|x| x.is_finite())
+    }
+}

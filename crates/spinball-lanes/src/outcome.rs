@@ -1,0 +1,77 @@
+//! What a lane run returns per initial condition.
+//!
+//! The kernels return raw sums, not exponents: `Σ ln(stretch)`, total flight
+//! time and collisions, which is what an ensemble needs to form per-time and
+//! per-collision exponents, to merge runs, and to compare with the scalar
+//! path without a division in between.
+
+use spinball_core::State;
+
+/// A plain trajectory: where it ended and how long it flew.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Flight {
+    /// State after the last collision (bitwise the scalar `Billiard::step`'s).
+    pub end: State,
+    /// Total flight time.
+    pub time: f64,
+    /// Collisions taken.
+    pub collisions: u64,
+}
+
+impl Flight {
+    /// Collisions per unit time.
+    pub fn collision_rate(&self) -> f64 {
+        self.collisions as f64 / self.time
+    }
+}
+
+/// The largest Lyapunov exponent's raw sums for one trajectory.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Stretch {
+    /// `Σ ln(stretch)` over the run (finite differences: `Σ ln(δ/δ0)`; exact
+    /// tangent: `ln` of the growth of the tangent vector).
+    pub log_stretch: f64,
+    /// Total flight time of the reference trajectory.
+    pub time: f64,
+    /// Collisions taken.
+    pub collisions: u64,
+    /// State of the reference trajectory after the last collision.
+    pub end: State,
+}
+
+impl Stretch {
+    /// λ per unit time, `Σ ln(stretch) / Σ Δt` (PHYSICS.md).
+    pub fn exponent(&self) -> f64 {
+        self.log_stretch / self.time
+    }
+    /// λ per collision.
+    pub fn per_collision(&self) -> f64 {
+        self.log_stretch / self.collisions as f64
+    }
+}
+
+/// The Lyapunov spectrum's raw sums for one trajectory.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct SpectrumStretch {
+    /// `Σ ln R_ii` for the five vectors, in the order of the Gram–Schmidt
+    /// sweep (not sorted).
+    pub log_stretch: [f64; 5],
+    /// Total flight time of the reference trajectory.
+    pub time: f64,
+    /// Collisions taken.
+    pub collisions: u64,
+    /// State of the reference trajectory after the last collision.
+    pub end: State,
+}
+
+impl SpectrumStretch {
+    /// The five exponents per unit time, sorted descending.
+    pub fn exponents(&self) -> [f64; 5] {
+        let mut e = self.log_stretch.map(|l| l / self.time);
+        e.sort_by(|a, b| b.total_cmp(a));
+        e
+    }
+}
