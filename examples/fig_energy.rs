@@ -1,6 +1,8 @@
 //! The paper's energy-conservation figure (appendix): |E_n − E_0| against
 //! collision number for the four tables at several α, and a long run that
-//! tracks the largest relative deviation max |ΔE|/E₀.
+//! tracks the largest relative deviation max |ΔE|/E₀, beside the same
+//! measurement for the paper's collision formulas evaluated literally in
+//! components (no energy-shell restore).
 //!
 //! ```text
 //! cargo run --release --example fig_energy -- [--quick | --paper] [--out DIR]
@@ -18,9 +20,10 @@
 //! | `--paper` | 5000        | 10⁷ collisions       |
 //!
 //! Writes `energy_trace.png` (2 × 2 grid, log y), `energy_long.png` (running
-//! max |ΔE|/E₀, log–log), `energy_trace.csv`, `energy_long.csv` and
-//! `energy.json` (per table and α: largest deviations, share of exact zeros,
-//! wall time). An exact zero cannot sit on a log axis: zeros are drawn on the
+//! max |ΔE|/E₀, log–log; solid: this library, dashed: paper eqs. 1–3 in
+//! components), `energy_trace.csv`, `energy_long.csv` and `energy.json` (per
+//! table and α: largest deviations of both, share of exact zeros, wall
+//! time). An exact zero cannot sit on a log axis: zeros are drawn on the
 //! floor line at 10⁻¹⁸ and counted in the JSON.
 
 use std::error::Error;
@@ -28,10 +31,14 @@ use std::fmt::Write as _;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use spinball_core::{Billiard, EnergyMonitor, SpinLaw, State};
-use spinball_geometry::{Boundary, DVec2, Table, TableVisitor};
+use serde_json::json;
+use spinball_analysis::{
+    EnergyHistory, component_law_energy_history, energy_history, energy_trace,
+};
+use spinball_core::{Billiard, SpinLaw, State};
+use spinball_geometry::{DVec2, Table};
 use spinball_plot::cli::FigureArgs;
-use spinball_plot::{Grid, Legend, LinePlot, Plot, Series, viridis};
+use spinball_plot::{Grid, Legend, LineKind, LinePlot, Plot, Series, viridis};
 
 const NAME: &str = "fig_energy";
 const ABOUT: &str = "Energy conservation |Eₙ − E₀| per collision and over long runs (paper appendix; fixed initial condition, --seed is not used).";
@@ -52,8 +59,6 @@ const TABLES: [(&str, &str, [f64; 2]); 4] = [
     ("sinai:L=2,R=1", "Sinai L = 2, R = 1", [-1.5, 0.2]),
 ];
 
-type BoxError = Box<dyn Error + Send + Sync>;
-
 fn main() -> ExitCode {
     let args = FigureArgs::parse_or_exit(NAME, ABOUT);
     match run(&args) {
@@ -65,16 +70,17 @@ fn main() -> ExitCode {
     }
 }
 
-/// One table at one α: the trace and the long run.
+/// One table at one α: the trace and the long runs.
 struct Measured {
     spec: &'static str,
     alpha: f64,
     trace: Vec<f64>,
-    long: Vec<(u64, f64)>,
+    long: EnergyHistory,
+    paper: EnergyHistory,
     long_seconds: f64,
 }
 
-fn run(args: &FigureArgs) -> Result<(), BoxError> {
+fn run(args: &FigureArgs) -> Result<(), Box<dyn Error>> {
     let t0 = Instant::now();
     let trace_len: u64 = args.pick(500, 5_000, 5_000);
     let long_len: u64 = args.pick(100_000, 1_000_000, 10_000_000);
@@ -85,23 +91,23 @@ fn run(args: &FigureArgs) -> Result<(), BoxError> {
         let table: Table = spec.parse()?;
         let start = State::new(DVec2::from(start), DVec2::from_angle(THETA0), U0);
         for alpha in ALPHAS {
-            let trace = table.visit(Trace {
-                alpha,
-                start,
-                collisions: trace_len,
-            })?;
+            let billiard = Billiard::new(table, SpinLaw::new(alpha)?);
+            let trace = energy_trace(&billiard, start, trace_len, 1)?
+                .points
+                .iter()
+                .map(|p| p.deviation)
+                .collect();
             let t = Instant::now();
-            let long = table.visit(LongRun {
-                alpha,
-                start,
-                collisions: long_len,
-            })?;
+            let long = energy_history(&billiard, start, long_len)?;
+            let long_seconds = t.elapsed().as_secs_f64();
+            let paper = component_law_energy_history(&table, billiard.law(), start, long_len)?;
             results.push(Measured {
                 spec,
                 alpha,
                 trace,
                 long,
-                long_seconds: t.elapsed().as_secs_f64(),
+                paper,
+                long_seconds,
             });
         }
     }
@@ -140,10 +146,10 @@ fn run(args: &FigureArgs) -> Result<(), BoxError> {
     let trace_png = args.output("energy_trace.png")?;
     grid.save_png(&trace_png, width, height)?;
 
-    // Figure 2: the long run.
+    // Figure 2: the long runs.
     let mut grid = Grid::new(2, 2).title(format!(
         "Largest relative energy deviation over {} collisions",
-        fmt_count(long_len)
+        spinball_plot::format_tick(long_len as f64)
     ));
     for (spec, title, _) in TABLES {
         let mut plot = LinePlot::new()
@@ -152,13 +158,34 @@ fn run(args: &FigureArgs) -> Result<(), BoxError> {
             .y_label("max |ΔE|/E₀ up to n")
             .log_x(true)
             .log_y(true)
-            .y_range(FLOOR / 3.0, 1e-13)
-            .legend(Legend::UpperRight)
+            .y_range(FLOOR / 3.0, 1e-9)
+            .legend(Legend::UpperLeft)
             .hline(f64::EPSILON, "ε")
             .hline(FLOOR, "exact 0");
+        // A legend entry for the dashed curves (its one point is clipped).
+        plot = plot.series(
+            Series::new("dashed: paper eqs. 1–3", [(1.0, FLOOR / 3.0)])
+                .line_only()
+                .kind(LineKind::Dashed)
+                .color(spinball_plot::RGBColor(60, 60, 60)),
+        );
         for (k, m) in results.iter().filter(|m| m.spec == spec).enumerate() {
-            let pts = m.long.iter().map(|&(n, d)| (n as f64, d.max(FLOOR)));
-            plot = plot.series(Series::new(format!("α = {}", m.alpha), pts).color(alpha_color(k)));
+            let curve = |h: &EnergyHistory| {
+                h.points
+                    .iter()
+                    .map(|p| (p.collisions as f64, p.max_relative_deviation.max(FLOOR)))
+                    .collect::<Vec<_>>()
+            };
+            plot = plot
+                .series(
+                    Series::new(format!("α = {}", m.alpha), curve(&m.long)).color(alpha_color(k)),
+                )
+                .series(
+                    Series::unlabelled(curve(&m.paper))
+                        .line_only()
+                        .kind(LineKind::Dashed)
+                        .color(alpha_color(k)),
+                );
         }
         grid.push(plot);
     }
@@ -167,30 +194,55 @@ fn run(args: &FigureArgs) -> Result<(), BoxError> {
 
     // Data.
     let mut csv = String::from("table,alpha,n,abs_dE\n");
-    let mut long_csv = String::from("table,alpha,n,max_rel_dE\n");
+    let mut long_csv = String::from("table,alpha,n,max_rel_dE,paper_formulas_max_rel_dE\n");
     for m in &results {
         for (n, d) in m.trace.iter().enumerate() {
             let _ = writeln!(csv, "\"{}\",{},{},{:e}", m.spec, m.alpha, n + 1, d);
         }
-        for (n, d) in &m.long {
-            let _ = writeln!(long_csv, "\"{}\",{},{},{:e}", m.spec, m.alpha, n, d);
+        for (p, q) in m.long.points.iter().zip(&m.paper.points) {
+            let _ = writeln!(
+                long_csv,
+                "\"{}\",{},{},{:e},{:e}",
+                m.spec, m.alpha, p.collisions, p.max_relative_deviation, q.max_relative_deviation
+            );
         }
     }
     std::fs::write(args.output("energy_trace.csv")?, csv)?;
     std::fs::write(args.output("energy_long.csv")?, long_csv)?;
+    let rows: Vec<_> = results
+        .iter()
+        .map(|m| {
+            let zeros = m.trace.iter().filter(|d| **d == 0.0).count();
+            json!({
+                "table": m.spec, "alpha": m.alpha,
+                "trace_max_abs_dE": m.trace.iter().copied().fold(0.0, f64::max),
+                "trace_exact_zero_fraction": zeros as f64 / m.trace.len().max(1) as f64,
+                "long_max_rel_dE": m.long.max_relative_deviation(),
+                "long_final_rel_dE": m.long.final_relative_deviation(),
+                "paper_formulas_long_max_rel_dE": m.paper.max_relative_deviation(),
+                "paper_formulas_long_final_rel_dE": m.paper.final_relative_deviation(),
+                "long_collisions": long_len, "long_seconds": m.long_seconds,
+            })
+        })
+        .collect();
+    let doc = json!({
+        "figure": NAME, "mode": args.mode.to_string(), "theta0": THETA0, "u0": U0,
+        "energy": 0.5, "trace_collisions": trace_len, "long_collisions": long_len,
+        "tables": TABLES.iter().map(|(s, _, p)| json!({"table": s, "start": p})).collect::<Vec<_>>(),
+        "results": rows, "version": env!("CARGO_PKG_VERSION"),
+    });
     std::fs::write(
         args.output("energy.json")?,
-        summary(args, trace_len, long_len, &results),
+        serde_json::to_string_pretty(&doc)? + "\n",
     )?;
 
-    let worst = results
-        .iter()
-        .map(|m| m.long.last().map_or(0.0, |l| l.1))
-        .fold(0.0, f64::max);
+    let worst = |f: fn(&Measured) -> f64| results.iter().map(f).fold(0.0, f64::max);
     println!(
-        "{NAME} ({} mode): max |ΔE|/E₀ over {} collisions = {worst:.2e} (all tables, α); wrote {} and {} in {:.2} s",
+        "{NAME} ({} mode): max |ΔE|/E₀ over {long_len} collisions = {:.2e} (all tables, α), \
+         paper formulas in components {:.2e}; wrote {} and {} in {:.2} s",
         args.mode,
-        fmt_count(long_len),
+        worst(|m| m.long.max_relative_deviation()),
+        worst(|m| m.paper.max_relative_deviation()),
         trace_png.display(),
         long_png.display(),
         t0.elapsed().as_secs_f64()
@@ -201,114 +253,4 @@ fn run(args: &FigureArgs) -> Result<(), BoxError> {
 /// Colours for the α values, dark to light (viridis without the pale end).
 fn alpha_color(k: usize) -> spinball_plot::RGBColor {
     viridis(k as f64 / (ALPHAS.len() - 1) as f64 * 0.85)
-}
-
-/// |E_n − E_0| after each of `collisions` collisions.
-struct Trace {
-    alpha: f64,
-    start: State,
-    collisions: u64,
-}
-
-impl TableVisitor for Trace {
-    type Output = Result<Vec<f64>, BoxError>;
-    fn visit<B: Boundary + Clone + Send + Sync>(self, table: &B) -> Self::Output {
-        let law = SpinLaw::new(self.alpha)?;
-        let billiard = Billiard::new(table.clone(), law);
-        let mut ball = billiard.launch(self.start)?;
-        let e0 = self.start.energy(&law);
-        let mut out = Vec::with_capacity(self.collisions as usize);
-        billiard.run(&mut ball, self.collisions, &mut |_: &_, s: &State| {
-            out.push((s.energy(&law) - e0).abs());
-        })?;
-        Ok(out)
-    }
-}
-
-/// The running maximum of |E_n − E_0|/E_0 at checkpoints 1, 2, 5, 10, ….
-struct LongRun {
-    alpha: f64,
-    start: State,
-    collisions: u64,
-}
-
-impl TableVisitor for LongRun {
-    type Output = Result<Vec<(u64, f64)>, BoxError>;
-    fn visit<B: Boundary + Clone + Send + Sync>(self, table: &B) -> Self::Output {
-        let law = SpinLaw::new(self.alpha)?;
-        let billiard = Billiard::new(table.clone(), law);
-        let mut ball = billiard.launch(self.start)?;
-        let mut monitor = EnergyMonitor::new(law, &self.start);
-        let mut done = 0;
-        let mut out = Vec::new();
-        for cp in checkpoints(self.collisions) {
-            billiard.run(&mut ball, cp - done, &mut monitor)?;
-            done = cp;
-            out.push((cp, monitor.max_relative_deviation));
-        }
-        Ok(out)
-    }
-}
-
-/// 1, 2, 5, 10, 20, 50, … up to and including `n`.
-fn checkpoints(n: u64) -> Vec<u64> {
-    let mut out = Vec::new();
-    let mut decade = 1;
-    'outer: loop {
-        for m in [1, 2, 5] {
-            let c = m * decade;
-            if c >= n {
-                break 'outer;
-            }
-            out.push(c);
-        }
-        decade *= 10;
-    }
-    out.push(n);
-    out
-}
-
-fn fmt_count(n: u64) -> String {
-    let e = (n as f64).log10();
-    if n >= 10_000 && (e - e.round()).abs() < 1e-12 {
-        spinball_plot::format_tick(n as f64)
-    } else {
-        n.to_string()
-    }
-}
-
-fn summary(args: &FigureArgs, trace_len: u64, long_len: u64, results: &[Measured]) -> String {
-    let rows: Vec<String> = results
-        .iter()
-        .map(|m| {
-            let max_abs = m.trace.iter().copied().fold(0.0, f64::max);
-            let zeros = m.trace.iter().filter(|d| **d == 0.0).count();
-            let long_max = m.long.last().map_or(0.0, |l| l.1);
-            format!(
-                "    {{\"table\": \"{}\", \"alpha\": {}, \"trace_max_abs_dE\": {:e}, \
-                 \"trace_exact_zero_fraction\": {:.4}, \"long_max_rel_dE\": {:e}, \
-                 \"long_collisions\": {}, \"long_seconds\": {:.3}}}",
-                m.spec,
-                m.alpha,
-                max_abs,
-                zeros as f64 / m.trace.len().max(1) as f64,
-                long_max,
-                long_len,
-                m.long_seconds
-            )
-        })
-        .collect();
-    format!(
-        "{{\n  \"figure\": \"{NAME}\",\n  \"mode\": \"{}\",\n  \"theta0\": {THETA0},\n  \"u0\": {U0},\n  \
-         \"energy\": 0.5,\n  \"trace_collisions\": {trace_len},\n  \"long_collisions\": {long_len},\n  \
-         \"tables\": [{}],\n  \"results\": [\n{}\n  ],\n  \"version\": \"{}\"\n}}\n",
-        args.mode,
-        TABLES
-            .iter()
-            .map(|(s, _, p)| format!("{{\"table\": \"{s}\", \"start\": [{}, {}]}}", p[0], p[1]))
-            .collect::<Vec<_>>()
-            .join(", "),
-        rows.join(",\n"),
-        env!("CARGO_PKG_VERSION")
-    )
 }

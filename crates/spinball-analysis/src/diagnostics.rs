@@ -540,13 +540,16 @@ struct Previous {
 /// changes ([`TransitionRule::Tangent`]) is 1 exactly. In the Sinai billiard
 /// (`L = 2, R = 1`) the rules give about 0.90–0.92, 1, 1: the paper's "`f_trans = 1`
 /// identically" is the wall or tangent rule, its stadium band the direction
-/// rule. The paper's "same-wall pairs at `~1e-16`" population cannot be
-/// reproduced with the physical tangent convention of PHYSICS.md
-/// (`t̂ = (n_y, −n_x)`, so the two stadium flats have opposite tangents and
-/// `Q` jumps by `−2v∥` between them); it would appear if both flats used the
-/// same tangent `(1, 0)`, which applies the spin law with the wrong
-/// handedness on one of them. What *is* at machine precision is `Q` through
-/// each collision: [`WallStatistics::dq_collision`].
+/// rule. The paper's "same-wall pairs at `~1e-16`" are the pairs on the
+/// same wall *id*: two hits in a row on one stadium cap, where the chord
+/// makes equal angles with both tangents, so `ΔQ = 0` up to rounding even
+/// though the tangent turns (they are counted as `turned` here; see
+/// [`QPairStatistics`](crate::QPairStatistics), which sorts pairs by wall
+/// first). Flat walls never give such a population under the physical
+/// tangent convention of PHYSICS.md (`t̂ = (n_y, −n_x)`: the two stadium
+/// flats have opposite tangents and `Q` jumps by `−2v∥` between them). `Q`
+/// through each collision is at machine precision too:
+/// [`WallStatistics::dq_collision`].
 ///
 /// ```
 /// use spinball_analysis::{TransitionRule, wall_statistics};

@@ -43,31 +43,43 @@
 //! - `serde`: `Serialize`/`Deserialize` for options, results and accumulators.
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
+pub mod convergence;
 pub mod diagnostics;
+pub mod energy;
 pub mod ensemble;
 pub mod error;
 pub mod ftle;
+pub mod islands;
 pub mod lyapunov;
 pub mod parallel;
+pub mod q_pairs;
 pub mod result;
+pub mod saturation;
 pub mod spectrum;
+pub mod spectrum_ensemble;
 pub mod stats;
 
+pub use convergence::*;
 #[allow(unused_imports)]
 pub use diagnostics::*;
+pub use energy::*;
 #[allow(unused_imports)]
 pub use ensemble::*;
 pub use error::AnalysisError;
 #[allow(unused_imports)]
 pub use ftle::*;
+pub use islands::*;
 pub use lyapunov::{
     HistoryPoint, Lyapunov, LyapunovOptions, Method, PAPER_DELTA0, largest_lyapunov,
     random_direction,
 };
 pub use parallel::{Threads, map_indices};
+pub use q_pairs::*;
 #[allow(unused_imports)]
 pub use result::*;
+pub use saturation::*;
 #[allow(unused_imports)]
 pub use spectrum::*;
+pub use spectrum_ensemble::*;
 #[allow(unused_imports)]
 pub use stats::*;

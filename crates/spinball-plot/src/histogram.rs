@@ -8,7 +8,9 @@ use crate::colormap::palette;
 use crate::error::PlotError;
 use crate::font;
 use crate::format::format_tick;
-use crate::lines::{Legend, LineKind, axis_tick, dash, legend_glyph, legend_width, pad};
+use crate::lines::{
+    Legend, LineKind, axis_tick, dash, legend_glyph, legend_width, log_label_count, pad,
+};
 use crate::plot::{Plot, inner_size, titled};
 use crate::style::Style;
 
@@ -270,7 +272,11 @@ impl Plot for Histogram {
             .x_label_formatter(&fmt)
             .y_label_formatter(&fmt_y)
             .x_labels(7)
-            .y_labels(if self.log_y { 9 } else { 6 })
+            .y_labels(if self.log_y {
+                log_label_count(y0, y1)
+            } else {
+                6
+            })
             .disable_x_mesh()
             .bold_line_style(RGBColor(0xE3, 0xE3, 0xE3).stroke_width(1))
             .light_line_style(TRANSPARENT)

@@ -369,8 +369,15 @@ impl LinePlot {
         (x0, x1): (f64, f64),
         (y0, y1): (f64, f64),
     ) -> Result<(), PlotError> {
-        let fmt_x = |v: &f64| axis_tick(*v, self.log_x);
-        let fmt_y = |v: &f64| axis_tick(*v, self.log_y);
+        // A tick that is zero up to the rounding of the tick arithmetic
+        // (5.55e-17 on an axis from -0.4 to 0.4) reads 0.
+        let snap = |v: f64, span: f64| if v.abs() < 1e-9 * span { 0.0 } else { v };
+        let (sx, sy) = (
+            (self.tx(x1) - self.tx(x0)).abs(),
+            (self.ty(y1) - self.ty(y0)).abs(),
+        );
+        let fmt_x = |v: &f64| axis_tick(snap(*v, sx), self.log_x);
+        let fmt_y = |v: &f64| axis_tick(snap(*v, sy), self.log_y);
         chart
             .configure_mesh()
             .x_desc(self.x_label.clone().unwrap_or_default())
@@ -379,8 +386,16 @@ impl LinePlot {
             .axis_desc_style((font::FAMILY, style.label_px).into_font())
             .x_label_formatter(&fmt_x)
             .y_label_formatter(&fmt_y)
-            .x_labels(if self.log_x { 9 } else { 7 })
-            .y_labels(if self.log_y { 9 } else { 7 })
+            .x_labels(if self.log_x {
+                log_label_count(self.tx(x0), self.tx(x1))
+            } else {
+                7
+            })
+            .y_labels(if self.log_y {
+                log_label_count(self.ty(y0), self.ty(y1))
+            } else {
+                7
+            })
             .bold_line_style(RGBColor(0xE3, 0xE3, 0xE3).stroke_width(1))
             .light_line_style(TRANSPARENT)
             .axis_style(BLACK.stroke_width(1))
@@ -700,8 +715,34 @@ pub(crate) fn legend_glyph<'a, DB: DrawingBackend + 'a>(
     EmptyElement::at((x, y)) + seg(0) + seg(1) + seg(2) + seg(3) + dot
 }
 
+/// How many tick labels to ask for on a log axis spanning `lo..hi` (in
+/// log10 units): over two decades or more, at most one per decade, so that
+/// the ticks fall on whole decades (asking for more makes plotters place
+/// them at half decades, `10^0.5 = 3.16…`); over less, the usual nine.
+pub(crate) fn log_label_count(lo: f64, hi: f64) -> usize {
+    let span = hi - lo;
+    if span.is_finite() && span >= 2.0 {
+        (span.floor() as usize + 1).min(9)
+    } else {
+        9
+    }
+}
+
+/// `x > 0` to two significant digits: `0.32`, `3.2`, `320`, `3.2×10⁴`.
+fn two_digits(x: f64) -> String {
+    let e = x.log10().floor() as i32;
+    if (-3..4).contains(&e) {
+        let decimals = (1 - e).max(0) as usize;
+        let r = 10f64.powi(e - 1);
+        format!("{:.decimals$}", (x / r).round() * r)
+    } else {
+        let m = x / 10f64.powi(e);
+        format!("{m:.1}×10{}", superscript(e))
+    }
+}
+
 /// A tick label: on a log axis the chart coordinate is log10 of the value,
-/// and whole decades read `10ⁿ`.
+/// whole decades read `10ⁿ` and other ticks two significant digits.
 pub(crate) fn axis_tick(v: f64, log: bool) -> String {
     if !log {
         return format_tick(v);
@@ -715,6 +756,24 @@ pub(crate) fn axis_tick(v: f64, log: bool) -> String {
             n => format!("10{}", superscript(n)),
         }
     } else {
-        format_tick(10f64.powf(v))
+        two_digits(10f64.powf(v))
+    }
+}
+
+#[cfg(test)]
+mod tick_tests {
+    use super::*;
+
+    #[test]
+    fn log_ticks_read_well() {
+        assert_eq!(axis_tick(0.5, true), "3.2");
+        assert_eq!(axis_tick(-0.5, true), "0.32");
+        assert_eq!(axis_tick(4.5, true), "3.2×10⁴");
+        assert_eq!(axis_tick(2.5, true), "320");
+        assert_eq!(axis_tick(3.0, true), "10³");
+        assert_eq!(log_label_count(0.0, 4.5), 5);
+        assert_eq!(log_label_count(-18.0, -13.0), 6);
+        assert_eq!(log_label_count(-20.0, 2.0), 9);
+        assert_eq!(log_label_count(0.0, 1.5), 9);
     }
 }

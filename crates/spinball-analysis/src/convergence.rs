@@ -1,0 +1,332 @@
+//! Is a finite-time exponent converged? Running-exponent (LCN) traces of one
+//! trajectory and ensemble estimates at several run lengths (paper, appendix
+//! "Convergence of LCN estimates", its Fig. of LCN traces and Table I).
+//!
+//! - [`lcn_trace`]: the running exponent `λ(t) = Σ ln(stretch) / t` of one
+//!   trajectory, kept at log-spaced collision counts for a log–log plot. On
+//!   an integrable table it decays like `ln t / t` (finite differences pick
+//!   up the linear shear), on a chaotic one it levels off at `λ`.
+//! - [`convergence_estimates`]: the ensemble estimate of `λ` after each of
+//!   several collision counts (`10⁴, 5·10⁴, 10⁵, 5·10⁵` in the paper). Every
+//!   initial condition is run **once**, to the largest count, and read at the
+//!   smaller ones from its running exponent; that reading is bitwise the
+//!   exponent a separate run of that length gives (same start, same shadow
+//!   direction, same arithmetic up to that collision), so one nested run
+//!   costs what the longest column costs alone, and the columns differ only by
+//!   run length, not by sampling noise of different initial conditions.
+//! - [`format_mean_sem`]: the paper's `0.183(1)` notation.
+
+use std::fmt::Write as _;
+use std::ops::Range;
+use std::time::Instant;
+
+use rand::Rng;
+use spinball_core::{Billiard, Sampler, State, ic_rng};
+use spinball_geometry::{Boundary, TableVisitor};
+
+use crate::ensemble::{Ensemble, TrajectoryStats};
+use crate::error::AnalysisError;
+use crate::lyapunov::{HistoryPoint, LyapunovOptions, Method, largest_lyapunov};
+use crate::parallel::map_indices;
+use crate::result::{LyapunovEstimate, StopReason};
+
+/// The running exponent of one trajectory at log-spaced collision counts.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct LcnTrace {
+    /// Running exponent per unit time after `collisions` collisions, at
+    /// roughly `points_per_decade` counts per decade (always including the
+    /// last collision).
+    pub points: Vec<HistoryPoint>,
+    /// The final exponent (the last point's).
+    pub exponent: f64,
+    /// Collisions run.
+    pub collisions: u64,
+    /// How it was measured.
+    pub method: Method,
+}
+
+/// The running Lyapunov exponent of the trajectory from `start` over
+/// `collisions` collisions, kept at about `points_per_decade` log-spaced
+/// collision counts (paper: 10⁵ collisions, `θ0 = 0.8`, `u0 = 0`, four
+/// tables, five α). `rng` draws the initial perturbation direction, as in
+/// [`largest_lyapunov`].
+///
+/// The running exponent is recorded at every collision up to `10⁵`
+/// collisions and every `⌈collisions/10⁵⌉` beyond, then thinned; the memory
+/// used is bounded by that.
+///
+/// ```
+/// use spinball_analysis::{Method, lcn_trace};
+/// use spinball_core::{Billiard, SpinLaw, State, ic_rng};
+/// use spinball_geometry::{Circle, DVec2, Stadium};
+///
+/// let start = State::new(DVec2::new(0.3, 0.2), DVec2::from_angle(0.8), 0.0);
+/// let chaotic = Billiard::new(Stadium::new(1.0)?, SpinLaw::new(0.0)?);
+/// let trace = lcn_trace(&chaotic, start, 20_000, Method::default(), 20, &mut ic_rng(1, 0))?;
+/// assert!(trace.exponent > 0.3); // plateau at λ ≈ 0.43
+/// let integrable = Billiard::new(Circle::new(1.0)?, SpinLaw::new(0.0)?);
+/// let trace = lcn_trace(&integrable, start, 20_000, Method::default(), 20, &mut ic_rng(1, 0))?;
+/// assert!(trace.exponent < 0.01); // decays like ln t / t
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+///
+/// # Errors
+/// [`AnalysisError::InvalidOption`] for zero collisions or
+/// `points_per_decade = 0`; otherwise as [`largest_lyapunov`].
+pub fn lcn_trace<B: Boundary, R: Rng + ?Sized>(
+    billiard: &Billiard<B>,
+    start: State,
+    collisions: u64,
+    method: Method,
+    points_per_decade: u32,
+    rng: &mut R,
+) -> Result<LcnTrace, AnalysisError> {
+    if points_per_decade == 0 {
+        return Err(AnalysisError::invalid("points_per_decade", "must be > 0"));
+    }
+    let stride = collisions.div_ceil(100_000).max(1);
+    let options = LyapunovOptions::new(collisions, method).with_history(stride);
+    let lyap = largest_lyapunov(billiard, start, &options, rng)?;
+    let step = 10f64.powf(1.0 / f64::from(points_per_decade));
+    let mut points: Vec<HistoryPoint> = Vec::new();
+    let mut next = 1.0;
+    for p in &lyap.history {
+        if p.collisions as f64 >= next {
+            points.push(*p);
+            while next <= p.collisions as f64 {
+                next *= step;
+            }
+        }
+    }
+    if points.last().map(|p| p.collisions) != Some(collisions) {
+        points.push(HistoryPoint {
+            collisions,
+            time: lyap.time,
+            exponent: lyap.exponent,
+        });
+    }
+    Ok(LcnTrace {
+        points,
+        exponent: lyap.exponent,
+        collisions,
+        method,
+    })
+}
+
+/// Per-trajectory results of initial condition `index` after each of
+/// `checkpoints` collisions (increasing), from one run to the last.
+/// Element `k` equals [`trajectory_ftle`](crate::trajectory_ftle) with
+/// `checkpoints[k]` collisions in `exponent`, `time` and `collisions`
+/// (bitwise); `per_collision` is `exponent · time / collisions`, equal to
+/// rounding.
+///
+/// # Errors
+/// As [`largest_lyapunov`], tagged with `index`.
+pub fn trajectory_checkpoints<B: Boundary>(
+    billiard: &Billiard<B>,
+    sampler: Sampler,
+    seed: u64,
+    index: u64,
+    checkpoints: &[u64],
+    method: Method,
+) -> Result<Vec<TrajectoryStats>, AnalysisError> {
+    check_checkpoints(checkpoints)?;
+    let last = *checkpoints.last().expect("checked non-empty");
+    let stride = checkpoints.iter().fold(0, |g, &c| gcd(g, c));
+    let mut rng = ic_rng(seed, index);
+    let start = sampler.sample(billiard.table(), billiard.law(), &mut rng);
+    let options = LyapunovOptions::new(last, method).with_history(stride);
+    let lyap =
+        largest_lyapunov(billiard, start, &options, &mut rng).map_err(|e| e.at_index(index))?;
+    checkpoints
+        .iter()
+        .map(|&c| {
+            let p = lyap.history[(c / stride - 1) as usize];
+            debug_assert_eq!(p.collisions, c);
+            Ok(TrajectoryStats {
+                index,
+                exponent: p.exponent,
+                per_collision: p.exponent * p.time / c as f64,
+                time: p.time,
+                collisions: c,
+            })
+        })
+        .collect()
+}
+
+fn gcd(a: u64, b: u64) -> u64 {
+    if b == 0 { a } else { gcd(b, a % b) }
+}
+
+fn check_checkpoints(checkpoints: &[u64]) -> Result<(), AnalysisError> {
+    if checkpoints.is_empty() {
+        return Err(AnalysisError::invalid("checkpoints", "need at least one"));
+    }
+    if checkpoints[0] == 0 || checkpoints.windows(2).any(|w| w[1] <= w[0]) {
+        return Err(AnalysisError::invalid(
+            "checkpoints",
+            format!("must be positive and strictly increasing, got {checkpoints:?}"),
+        ));
+    }
+    Ok(())
+}
+
+/// The ensemble estimate of the largest exponent after each of
+/// `checkpoints` collisions (strictly increasing), for the table, law,
+/// sampler, seed, index range, method, threads and threshold of `ensemble`
+/// (its own `collisions` is not used). Estimate `k` has
+/// `collisions_per_ic = checkpoints[k]` and equals `ensemble` run with that
+/// many collisions, except for `wall_time_s`, which is the wall time of the
+/// whole nested run on every estimate (see the [module docs](self)).
+///
+/// Cost: `n_ics × max(checkpoints)` finite-difference (or tangent) steps.
+///
+/// ```
+/// use spinball_analysis::{Ensemble, convergence_estimates};
+/// use spinball_core::SpinLaw;
+/// use spinball_geometry::Sinai;
+///
+/// let ensemble = Ensemble::new(Sinai::new(2.0, 1.0)?, SpinLaw::new(0.5)?).with_ics(16).with_seed(3);
+/// let columns = convergence_estimates(&ensemble, &[1_000, 4_000])?;
+/// assert_eq!(columns[1].collisions_per_ic, 4_000);
+/// let direct = ensemble.with_collisions(1_000).run()?;
+/// assert_eq!(columns[0].mean, direct.mean); // bitwise
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+///
+/// # Errors
+/// [`AnalysisError::InvalidOption`] for empty, non-increasing or zero
+/// checkpoints and as [`Ensemble::validate`]; then the first trajectory
+/// error.
+pub fn convergence_estimates(
+    ensemble: &Ensemble,
+    checkpoints: &[u64],
+) -> Result<Vec<LyapunovEstimate>, AnalysisError> {
+    check_checkpoints(checkpoints)?;
+    ensemble.validate()?;
+    let clock = Instant::now();
+    let per_ic = ensemble.table.visit(RunCheckpoints {
+        ensemble,
+        indices: ensemble.indices.clone(),
+        checkpoints,
+    })?;
+    let wall = clock.elapsed().as_secs_f64();
+    checkpoints
+        .iter()
+        .enumerate()
+        .map(|(k, &c)| {
+            let column = per_ic.iter().map(|row| row[k]).collect();
+            LyapunovEstimate::from_trajectories(
+                &ensemble.clone().with_collisions(c),
+                column,
+                wall,
+                StopReason::Completed,
+            )
+        })
+        .collect()
+}
+
+struct RunCheckpoints<'a> {
+    ensemble: &'a Ensemble,
+    indices: Range<u64>,
+    checkpoints: &'a [u64],
+}
+
+impl TableVisitor for RunCheckpoints<'_> {
+    type Output = Result<Vec<Vec<TrajectoryStats>>, AnalysisError>;
+    fn visit<B: Boundary + Clone + Send + Sync>(self, table: &B) -> Self::Output {
+        let e = self.ensemble;
+        let billiard = Billiard::new(table.clone(), e.law);
+        map_indices(self.indices, e.threads, |i| {
+            trajectory_checkpoints(&billiard, e.sampler, e.seed, i, self.checkpoints, e.method)
+        })
+    }
+}
+
+/// `mean(SEM)` with `decimals` decimals and the SEM in units of the last
+/// digit, rounded (the paper's notation: `0.183(1)` is `0.183 ± 0.001`;
+/// `0.281(0)` a SEM below half a unit of the last digit). A SEM of 100
+/// units or more is written out as `(±sem)`.
+///
+/// ```
+/// use spinball_analysis::format_mean_sem;
+/// assert_eq!(format_mean_sem(0.18312, 0.0006, 3), "0.183(1)");
+/// assert_eq!(format_mean_sem(0.2805, 0.0002, 3), "0.281(0)");
+/// assert_eq!(format_mean_sem(0.1466, 0.0031, 4), "0.1466(31)");
+/// ```
+pub fn format_mean_sem(mean: f64, sem: f64, decimals: usize) -> String {
+    let unit = 10f64.powi(-(decimals as i32));
+    let units = (sem / unit).round();
+    let mut s = format!("{mean:.decimals$}");
+    if units.is_finite() && units < 100.0 {
+        let _ = write!(s, "({})", units as u64);
+    } else {
+        let _ = write!(s, "(±{sem:.decimals$})");
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ensemble::trajectory_ftle;
+    use spinball_core::SpinLaw;
+    use spinball_geometry::{Circle, DVec2, Stadium};
+
+    #[test]
+    fn checkpoints_match_separate_runs_bitwise() {
+        let billiard = Billiard::new(Stadium::new(1.0).unwrap(), SpinLaw::new(0.5).unwrap());
+        for method in [Method::default(), Method::Tangent] {
+            let rows =
+                trajectory_checkpoints(&billiard, Sampler::Paper, 9, 4, &[300, 1200, 3000], method)
+                    .unwrap();
+            for row in rows {
+                let direct =
+                    trajectory_ftle(&billiard, Sampler::Paper, 9, 4, row.collisions, method)
+                        .unwrap();
+                assert_eq!(row.exponent.to_bits(), direct.exponent.to_bits());
+                assert_eq!(row.time.to_bits(), direct.time.to_bits());
+                assert!((row.per_collision - direct.per_collision).abs() < 1e-14);
+            }
+        }
+    }
+
+    #[test]
+    fn bad_checkpoints_are_refused() {
+        let billiard = Billiard::new(Stadium::new(1.0).unwrap(), SpinLaw::new(0.5).unwrap());
+        for bad in [&[][..], &[0, 10], &[10, 10], &[20, 10]] {
+            assert!(
+                trajectory_checkpoints(&billiard, Sampler::Paper, 1, 0, bad, Method::Tangent)
+                    .is_err()
+            );
+        }
+    }
+
+    #[test]
+    fn trace_is_log_spaced_and_ends_at_the_last_collision() {
+        let billiard = Billiard::new(Circle::new(1.0).unwrap(), SpinLaw::new(0.3).unwrap());
+        let start = State::new(DVec2::new(0.3, 0.2), DVec2::from_angle(0.8), 0.0);
+        let trace = lcn_trace(
+            &billiard,
+            start,
+            10_000,
+            Method::default(),
+            10,
+            &mut ic_rng(0, 0),
+        )
+        .unwrap();
+        let n: Vec<u64> = trace.points.iter().map(|p| p.collisions).collect();
+        assert_eq!(n[0], 1);
+        assert_eq!(*n.last().unwrap(), 10_000);
+        assert!(n.windows(2).all(|w| w[1] > w[0]));
+        assert!(n.len() > 35 && n.len() <= 42, "{}", n.len());
+        assert!(lcn_trace(&billiard, start, 10, Method::Tangent, 0, &mut ic_rng(0, 0)).is_err());
+    }
+
+    #[test]
+    fn mean_sem_notation() {
+        assert_eq!(format_mean_sem(0.147, 0.0012, 3), "0.147(1)");
+        assert_eq!(format_mean_sem(0.5, 0.2, 3), "0.500(±0.200)");
+    }
+}
