@@ -44,7 +44,7 @@
 //! | `rayon` | ensembles run on all cores (results stay bitwise identical for any thread count) |
 //!
 //! # Minimum supported Rust version
-//! Rust 1.88 (edition 2024). Raising it is a minor-version change.
+//! Rust 1.89 (edition 2024; the lane kernels use AVX-512 intrinsics stabilised in 1.89). Raising it is a minor-version change.
 //!
 //! # Conventions
 //! Every convention (inward normals, `t × n = +z`, curvature signs, Birkhoff
@@ -59,9 +59,9 @@ pub use spinball_geometry as geometry;
 /// The names most programs need: `use spinball::prelude::*;`.
 pub mod prelude {
     pub use spinball_analysis::{
-        AnalysisError, Ensemble, FtleDistribution, Lyapunov, LyapunovEstimate, LyapunovOptions,
-        Method, Spectrum, SpectrumOptions, StopReason, StopRule, Threads, largest_lyapunov,
-        lyapunov_spectrum,
+        AnalysisError, Engine, Ensemble, FtleDistribution, Lyapunov, LyapunovEstimate,
+        LyapunovOptions, Method, Spectrum, SpectrumOptions, StopReason, StopRule, Threads,
+        largest_lyapunov, lyapunov_spectrum,
     };
     pub use spinball_core::{
         Ball, Billiard, Collision, EnergyMonitor, Observer, Recorder, Sampler, SpinLaw, State,

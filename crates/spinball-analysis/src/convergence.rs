@@ -183,14 +183,15 @@ fn check_checkpoints(checkpoints: &[u64]) -> Result<(), AnalysisError> {
 /// Cost: `n_ics × max(checkpoints)` finite-difference (or tangent) steps.
 ///
 /// ```
-/// use spinball_analysis::{Ensemble, convergence_estimates};
+/// use spinball_analysis::{Engine, Ensemble, convergence_estimates};
 /// use spinball_core::SpinLaw;
 /// use spinball_geometry::Sinai;
 ///
 /// let ensemble = Ensemble::new(Sinai::new(2.0, 1.0)?, SpinLaw::new(0.5)?).with_ics(16).with_seed(3);
 /// let columns = convergence_estimates(&ensemble, &[1_000, 4_000])?;
 /// assert_eq!(columns[1].collisions_per_ic, 4_000);
-/// let direct = ensemble.with_collisions(1_000).run()?;
+/// // The checkpoints run the scalar path; so does this direct run.
+/// let direct = ensemble.with_engine(Engine::Scalar).with_collisions(1_000).run()?;
 /// assert_eq!(columns[0].mean, direct.mean); // bitwise
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```

@@ -117,6 +117,9 @@ pub struct LyapunovEstimate {
     pub sampler: Sampler,
     /// Version of `spinball-analysis` that computed it.
     pub version: String,
+    /// Which implementation ran the trajectories (`lanes` or `scalar`).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub engine: String,
     /// Why the run stopped.
     pub stop: StopReason,
     /// Per-trajectory results, in index order.
@@ -164,6 +167,7 @@ impl LyapunovEstimate {
             delta0,
             sampler: ensemble.sampler,
             version: env!("CARGO_PKG_VERSION").to_string(),
+            engine: ensemble.engine.name().to_string(),
             stop,
             trajectories,
         };
@@ -266,6 +270,9 @@ impl LyapunovEstimate {
         }
         if self.threshold.to_bits() != other.threshold.to_bits() {
             return mismatch("thresholds", &self.threshold, &other.threshold);
+        }
+        if self.engine != other.engine {
+            return mismatch("engines", &self.engine, &other.engine);
         }
         if self.version != other.version {
             return mismatch("crate versions", &self.version, &other.version);
