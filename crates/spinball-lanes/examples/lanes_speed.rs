@@ -184,40 +184,59 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     Ok(())
 }
 
-/// The scalar path on one thread, over a tenth of the initial conditions.
+/// The scalar path (`spinball-core`, `spinball-analysis`) on one thread,
+/// over a tenth of the initial conditions: the specification the lanes are
+/// tested against, and the speed they replace.
 fn scalar(
     a: &Args,
     law: &SpinLaw,
     starts: &[State],
-    dirs: &[TangentVector],
+    _dirs: &[TangentVector],
 ) -> Result<(), Box<dyn std::error::Error>> {
-    use spinball_analysis::{LyapunovOptions, Method, largest_lyapunov};
+    use spinball_analysis::{
+        LyapunovOptions, Method, SpectrumOptions, largest_lyapunov, lyapunov_spectrum,
+    };
     use spinball_core::Billiard;
     let Table::Stadium(stadium) = a.table else {
         return Err("--scalar is implemented for the stadium".into());
     };
     let billiard = Billiard::new(stadium, *law);
     let n = (starts.len() / 10).max(1);
-    for method in [Method::default(), Method::Tangent] {
-        let t0 = Instant::now();
-        for (s, d) in starts.iter().zip(dirs).take(n) {
-            // `largest_lyapunov` draws its direction from the rng; a fixed
-            // stream is enough for timing.
-            let _ = d;
-            let mut rng = ic_rng(1, 0);
-            largest_lyapunov(
-                &billiard,
-                *s,
-                &LyapunovOptions::new(a.collisions, method),
-                &mut rng,
-            )?;
-        }
-        let t = t0.elapsed().as_secs_f64();
+    let steps = n as f64 * a.collisions as f64;
+    let report = |name: &str, (t0, c0): (Instant, Option<f64>)| {
+        let cpu = match (c0, cpu_seconds()) {
+            (Some(c0), Some(c1)) => (c1 - c0) / steps * 1e9,
+            _ => f64::NAN,
+        };
         println!(
-            "scalar    {:<9} {:8.3} ns/IC-step (1 thread)",
-            method.name(),
-            t / (n as f64 * a.collisions as f64) * 1e9
+            "scalar    {name:<9} wall {:8.3} ns/IC-step  cpu {cpu:8.3} ns/IC-step  (1 thread)",
+            t0.elapsed().as_secs_f64() / steps * 1e9
         );
+    };
+    let start = || (Instant::now(), cpu_seconds());
+    let t0 = start();
+    for s in starts.iter().take(n) {
+        let mut ball = billiard.launch(*s)?;
+        for _ in 0..a.collisions {
+            billiard.step(&mut ball)?;
+        }
     }
+    report("plain", t0);
+    for method in [Method::default(), Method::Tangent] {
+        let t0 = start();
+        for s in starts.iter().take(n) {
+            let mut rng = ic_rng(1, 0);
+            let opts = LyapunovOptions::new(a.collisions, method);
+            largest_lyapunov(&billiard, *s, &opts, &mut rng)?;
+        }
+        report(method.name(), t0);
+    }
+    let t0 = start();
+    for s in starts.iter().take(n) {
+        let mut rng = ic_rng(1, 0);
+        let opts = SpectrumOptions::new(a.collisions, Method::Tangent);
+        lyapunov_spectrum(&billiard, *s, &opts, &mut rng)?;
+    }
+    report("spectrum", t0);
     Ok(())
 }

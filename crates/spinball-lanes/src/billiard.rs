@@ -11,6 +11,13 @@ use crate::isa::Isa;
 use crate::kernels::{self, Kernel};
 use crate::outcome::{Flight, SpectrumStretch, Stretch};
 
+/// A multiple of every kernel's lane count on every level (32, 24, 16, 12,
+/// 8 trajectories). Callers that split an ensemble into chunks (and
+/// [`LaneBilliard::with_threads`]) should cut at multiples of it: then only
+/// the last chunk of a run has lanes idling in a partial register group.
+/// (Any split gives the same numbers; this is about speed only.)
+pub const CHUNK: usize = 96;
+
 /// Largest accepted `qr_interval` of [`LaneBilliard::spectrum`] (as the
 /// scalar `spinball_analysis::MAX_QR_INTERVAL`).
 pub const MAX_QR_INTERVAL: u32 = 32;
@@ -255,11 +262,11 @@ impl LaneBilliard {
 
     fn split<K: Kernel, G: Geom>(&self, k: &K, g: &G, law: &Law, ins: &[K::In]) -> Vec<K::Out> {
         let isa = self.isa;
-        if self.threads <= 1 || ins.len() <= 16 {
+        if self.threads <= 1 || ins.len() <= CHUNK {
             return k.dispatch(isa, g, law, ins);
         }
-        // Parts of whole 16-lane chunks, so only the last part has a tail.
-        let per = ins.len().div_ceil(self.threads).div_ceil(16) * 16;
+        // Parts of whole chunks, so only the last part has a tail.
+        let per = ins.len().div_ceil(self.threads).div_ceil(CHUNK) * CHUNK;
         std::thread::scope(|s| {
             let parts: Vec<_> = ins
                 .chunks(per)

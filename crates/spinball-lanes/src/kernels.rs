@@ -138,7 +138,7 @@ impl Kernel for Plain {
     }
 
     fn dispatch<G: Geom>(&self, isa: Isa, g: &G, law: &Law, ins: &[Self::In]) -> Vec<Self::Out> {
-        dispatch!(isa, g, law, self, ins; avx512 = Wide<Avx512, 3>, avx2 = Wide<Avx2, 2>, sse2 = Wide<Sse2, 2>, portable = Wide<f64, 4>)
+        dispatch!(isa, g, law, self, ins; avx512 = Wide<Avx512, 4>, avx2 = Wide<Avx2, 4>, sse2 = Wide<Sse2, 4>, portable = Wide<f64, 4>)
     }
 
     fn is_sound(o: &Flight) -> bool {
@@ -204,7 +204,7 @@ impl Kernel for FiniteDifference {
     }
 
     fn dispatch<G: Geom>(&self, isa: Isa, g: &G, law: &Law, ins: &[Self::In]) -> Vec<Self::Out> {
-        dispatch!(isa, g, law, self, ins; avx512 = Wide<Avx512, 2>, avx2 = Wide<Avx2, 1>, sse2 = Wide<Sse2, 2>, portable = Wide<f64, 4>)
+        dispatch!(isa, g, law, self, ins; avx512 = Wide<Avx512, 3>, avx2 = Wide<Avx2, 4>, sse2 = Wide<Sse2, 4>, portable = Wide<f64, 4>)
     }
 
     fn is_sound(o: &Stretch) -> bool {
@@ -276,7 +276,7 @@ impl Kernel for Tangent {
     }
 
     fn dispatch<G: Geom>(&self, isa: Isa, g: &G, law: &Law, ins: &[Self::In]) -> Vec<Self::Out> {
-        dispatch!(isa, g, law, self, ins; avx512 = Wide<Avx512, 2>, avx2 = Wide<Avx2, 2>, sse2 = Wide<Sse2, 2>, portable = Wide<f64, 4>)
+        dispatch!(isa, g, law, self, ins; avx512 = Wide<Avx512, 3>, avx2 = Wide<Avx2, 4>, sse2 = Wide<Sse2, 4>, portable = Wide<f64, 4>)
     }
 
     fn is_sound(o: &Stretch) -> bool {
@@ -356,12 +356,148 @@ impl Kernel for Spectrum {
     }
 
     fn dispatch<G: Geom>(&self, isa: Isa, g: &G, law: &Law, ins: &[Self::In]) -> Vec<Self::Out> {
-        dispatch!(isa, g, law, self, ins; avx512 = Avx512, avx2 = Avx2, sse2 = Sse2, portable = Wide<f64, 2>)
+        dispatch!(isa, g, law, self, ins; avx512 = Wide<Avx512, 2>, avx2 = Wide<Avx2, 3>, sse2 = Wide<Sse2, 4>, portable = Wide<f64, 2>)
     }
 
     fn is_sound(o: &SpectrumStretch) -> bool {
         o.log_stretch.iter().all(|x| x.is_finite())
             && o.time.is_finite()
             && o.end.to_array().iter().all(|x| x.is_finite())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use spinball_core::{Sampler, SpinLaw};
+    use spinball_geometry::Stadium;
+
+    use super::*;
+    use crate::geom::LaneStadium;
+    use crate::lanes::Wide;
+
+    /// The portable lane type (used off x86) gives the numbers of the
+    /// one-lane reference, tails included.
+    #[test]
+    fn portable_lanes_match_one_lane() {
+        let table = Stadium::new(1.0).unwrap();
+        let law = SpinLaw::new(0.4).unwrap();
+        let g = LaneStadium::new(&table);
+        let l = Law::new(&law);
+        let ins: Vec<(State, TangentVector)> = (0..11)
+            .map(|i| {
+                let s = Sampler::Paper.initial_state(&table, &law, 3, i);
+                (s, TangentVector::from_array([0.6, -0.2, 0.1, 0.7, 0.3]))
+            })
+            .collect();
+        let starts: Vec<State> = ins.iter().map(|x| x.0).collect();
+        let unit = |j: usize| {
+            let mut z = [0.0; 5];
+            z[j] = 1.0;
+            TangentVector::from_array(z)
+        };
+        let frames: Vec<(State, [TangentVector; 5])> = ins
+            .iter()
+            .map(|x| (x.0, std::array::from_fn(unit)))
+            .collect();
+        let plain = Plain { collisions: 500 };
+        assert_eq!(
+            run_chunks::<_, _, Wide<f64, 3>>(&g, &l, &plain, &starts),
+            run_chunks::<_, _, f64>(&g, &l, &plain, &starts)
+        );
+        let fd = FiniteDifference {
+            collisions: 500,
+            delta0: 1e-7,
+        };
+        assert_eq!(
+            run_chunks::<_, _, Wide<f64, 4>>(&g, &l, &fd, &ins),
+            run_chunks::<_, _, f64>(&g, &l, &fd, &ins)
+        );
+        let tangent = Tangent { collisions: 500 };
+        assert_eq!(
+            run_chunks::<_, _, Wide<f64, 4>>(&g, &l, &tangent, &ins),
+            run_chunks::<_, _, f64>(&g, &l, &tangent, &ins)
+        );
+        let spectrum = Spectrum {
+            collisions: 500,
+            qr_interval: 3,
+        };
+        assert_eq!(
+            run_chunks::<_, _, Wide<f64, 2>>(&g, &l, &spectrum, &frames),
+            run_chunks::<_, _, f64>(&g, &l, &spectrum, &frames)
+        );
+    }
+
+    /// Operations per collision step of each kernel on the stadium (a = 1,
+    /// α = 0.5), counted with a one-lane counting type over 20 000 steps:
+    /// the numbers behind the "floor" column of docs/PERFORMANCE.md. Run
+    /// with `--nocapture` to see them.
+    #[test]
+    fn operation_counts_per_step() {
+        use crate::lanes::counted::{Counted, take};
+        let table = Stadium::new(1.0).unwrap();
+        let law = SpinLaw::new(0.5).unwrap();
+        let g = LaneStadium::new(&table);
+        let l = Law::new(&law);
+        let s = Sampler::Paper.initial_state(&table, &law, 1, 0);
+        let d = TangentVector::from_array([0.6, -0.2, 0.1, 0.7, 0.3]);
+        let unit = |j: usize| {
+            let mut z = [0.0; 5];
+            z[j] = 1.0;
+            TangentVector::from_array(z)
+        };
+        const N: u64 = 20_000;
+        let names = [
+            "add/sub",
+            "mul",
+            "div",
+            "sqrt",
+            "cmp/max/abs",
+            "select",
+            "mask",
+            "bits",
+        ];
+        let report = |kernel: &str| {
+            let c = take();
+            let per: Vec<String> = names
+                .iter()
+                .zip(c)
+                .map(|(n, k)| format!("{n} {:.2}", k as f64 / N as f64))
+                .collect();
+            println!("{kernel:<9} per step: {}", per.join(", "));
+            c
+        };
+        take();
+        run_chunks::<_, _, Counted>(&g, &l, &Plain { collisions: N }, &[s]);
+        let plain = report("plain");
+        run_chunks::<_, _, Counted>(
+            &g,
+            &l,
+            &FiniteDifference {
+                collisions: N,
+                delta0: 1e-7,
+            },
+            &[(s, d)],
+        );
+        let fd = report("fd");
+        run_chunks::<_, _, Counted>(&g, &l, &Tangent { collisions: N }, &[(s, d)]);
+        report("tangent");
+        run_chunks::<_, _, Counted>(
+            &g,
+            &l,
+            &Spectrum {
+                collisions: N,
+                qr_interval: 1,
+            },
+            &[(s, std::array::from_fn(unit))],
+        );
+        report("spectrum");
+        // Sanity: two divisions and a square root per plain stadium step
+        // (flat time, 1/|v|², the cap's discriminant; plus one 1/|V|² at
+        // launch); the fallback of the circle contact never runs. The finite
+        // differences add the shadow's step and shell, and δ0/δ.
+        assert_eq!(plain[2], 2 * N + 1);
+        assert_eq!(plain[3], N);
+        assert_eq!(fd[2], 6 * N + 1);
+        assert_eq!(fd[3], 3 * N);
     }
 }

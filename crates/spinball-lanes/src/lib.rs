@@ -69,7 +69,7 @@ mod kernels;
 mod lanes;
 mod outcome;
 
-pub use billiard::{LaneBilliard, MAX_QR_INTERVAL};
+pub use billiard::{CHUNK, LaneBilliard, MAX_QR_INTERVAL};
 pub use error::LanesError;
 pub use isa::Isa;
 pub use outcome::{Flight, SpectrumStretch, Stretch};
