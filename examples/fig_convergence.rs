@@ -143,7 +143,7 @@ fn run(args: &FigureArgs) -> Result<(), Box<dyn Error>> {
         let start = State::new(DVec2::from(p), DVec2::from_angle(THETA0), U0);
         let mut plot = LinePlot::new()
             .title(title)
-            .x_label("time t (|v₀| = 1, table lengths in units of 1)")
+            .x_label("time t   (speed |v₀| = 1)")
             .y_label("running λ(t) (1/time)")
             .log_x(true)
             .log_y(true)

@@ -12,7 +12,7 @@
 //! |-----------|-----------|------------|---------------------|
 //! | `--quick` | 100       | 2 000      | < 1 s               |
 //! | default   | 2 000     | 5·10⁴      | about a minute      |
-//! | `--paper` | 10⁵       | 5·10⁴      | hours               |
+//! | `--paper` | 10⁵       | 5·10⁴      | about an hour       |
 //!
 //! Paper sampler, finite-difference Benettin (δ0 = 1e-7), chaos threshold
 //! 0.01. Writes `ftle.png` (2 × 3 histograms), `ftle.csv` (every FTLE),

@@ -10,7 +10,7 @@
 //! | mode      | α values          | ICs | collisions |
 //! |-----------|-------------------|-----|------------|
 //! | `--quick` | 0, 0.3, 0.7, 1    | 4   | 2 000      |
-//! | default   | 0, 0.1, …, 1 (11) | 50  | 2·10⁴      |
+//! | default   | 0, 0.1, …, 1 (11) | 50  | 5·10⁴      |
 //! | `--paper` | 0, 0.05, …, 1 (21)| 50  | 5·10⁴      |
 //!
 //! Paper sampler; QR (modified Gram–Schmidt) after every collision; δ0 =
@@ -90,7 +90,7 @@ fn run(args: &FigureArgs) -> Result<(), Box<dyn Error>> {
         (0..=20).map(|k| k as f64 / 20.0).collect(),
     );
     let ics: u64 = args.pick(4, 50, 50);
-    let collisions: u64 = args.pick(2_000, 20_000, 50_000);
+    let collisions: u64 = args.pick(2_000, 50_000, 50_000);
 
     let mut results: Vec<(&str, Vec<Point>)> = Vec::new();
     for (spec, _) in TABLES {
@@ -162,7 +162,7 @@ fn run(args: &FigureArgs) -> Result<(), Box<dyn Error>> {
                     for k in 1..4 {
                         plot = plot.series(series(k, false, format!("λ{}", sub(k + 1))));
                     }
-                    plot = plot.hline(0.0, "").y_range(-0.004, 0.004);
+                    plot = plot.hline(0.0, "");
                 }
                 2 => {
                     for k in 0..4 {
