@@ -59,18 +59,29 @@ struct Contact<L: Lanes> {
 /// `care` where `r` is not that close to the circle (a ball found off the
 /// wall, never in a sound run) the scalar normalises exactly instead; that
 /// is computed only if such a lane exists.
+///
+/// `UNIT`: the radius is 1, so the scalar's multiplications by `1/r²`, `1/r`
+/// and `r` are multiplications by 1.0, exact, and left out.
 #[inline(always)]
-fn contact<L: Lanes>(cx: L, cy: L, rx: L, ry: L, k: &Round, care: L::Mask) -> (L, L, L, L) {
-    let rr = (rx * rx + ry * ry) * (k.inv_r * k.inv_r);
+fn contact<L: Lanes, const UNIT: bool>(
+    cx: L,
+    cy: L,
+    rx: L,
+    ry: L,
+    k: &Round,
+    care: L::Mask,
+) -> (L, L, L, L) {
+    let times = |x: L, f: f64| if UNIT { x } else { x * f };
+    let rr = times(rx * rx + ry * ry, k.inv_r * k.inv_r);
     let near = (rr - 1.0).abs().lt(L::splat(1e-8));
-    let s = (L::splat(1.5) - rr * 0.5) * k.inv_r;
+    let s = times(L::splat(1.5) - rr * 0.5, k.inv_r);
     let (mut nx, mut ny) = (rx * s, ry * s);
     if care.and(near.not()).any() {
         let inv = L::splat(1.0) / (rx * rx + ry * ry).sqrt();
         nx = L::select(near, nx, rx * inv);
         ny = L::select(near, ny, ry * inv);
     }
-    (cx + nx * k.r, cy + ny * k.r, nx, ny)
+    (cx + times(nx, k.r), cy + times(ny, k.r), nx, ny)
 }
 
 /// Constants of a circle of radius `r` as the scalar casts use them.
@@ -97,10 +108,11 @@ impl Round {
 }
 
 /// `cast_concave_circle` of `spinball-geometry`, lane by lane (centre per
-/// lane). `care`: the lanes whose result is used.
+/// lane). `care`: the lanes whose result is used. `UNIT`: radius 1 (see
+/// [`contact`]); `ON_AXIS`: `cy = 0`, so `y − cy = y` exactly.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn concave<L: Lanes>(
+fn concave<L: Lanes, const UNIT: bool, const ON_AXIS: bool>(
     cx: L,
     cy: L,
     k: &Round,
@@ -112,7 +124,7 @@ fn concave<L: Lanes>(
 ) -> Contact<L> {
     let zero = L::splat(0.0);
     let dx = x - cx;
-    let dy = y - cy;
+    let dy = if ON_AXIS { y } else { y - cy };
     let a = vx * vx + vy * vy;
     let b = dx * vx + dy * vy;
     let c = (dx * dx + dy * dy) - k.r2;
@@ -122,7 +134,8 @@ fn concave<L: Lanes>(
     let ok = disc.ge(zero).and(a.gt(zero));
     let inv_a = L::splat(1.0) / a;
     let time = ((disc.sqrt() - b) * inv_a).max(zero);
-    let (px, py, radx, rady) = contact(cx, cy, dx + vx * time, dy + vy * time, k, care.and(ok));
+    let (px, py, radx, rady) =
+        contact::<L, UNIT>(cx, cy, dx + vx * time, dy + vy * time, k, care.and(ok));
     Contact {
         time: L::select(ok, time, L::splat(f64::NAN)),
         px,
@@ -146,7 +159,8 @@ fn convex<L: Lanes>(k: &Round, x: L, y: L, vx: L, vy: L) -> Contact<L> {
     let ok = b.lt(zero).and(disc.gt(zero));
     let inv_a = L::splat(1.0) / a;
     let time = ((-b - disc.sqrt()) * inv_a).max(zero);
-    let (px, py, radx, rady) = contact(zero, zero, dx + vx * time, dy + vy * time, k, ok);
+    let (px, py, radx, rady) =
+        contact::<L, false>(zero, zero, dx + vx * time, dy + vy * time, k, ok);
     Contact {
         time: L::select(ok, time, L::splat(f64::INFINITY)),
         px,
@@ -220,7 +234,7 @@ impl Geom for LaneCircle {
     fn cast<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> LaneHit<L> {
         let zero = L::splat(0.0);
         let all = zero.eq(zero);
-        let c = concave(zero, zero, &self.round, x, y, vx, vy, all);
+        let c = concave::<L, false, true>(zero, zero, &self.round, x, y, vx, vy, all);
         LaneHit {
             time: c.time,
             px: c.px,
@@ -300,7 +314,7 @@ impl Geom for LaneStadium {
         let side = L::select(moving_y, x_scaled, vx);
         let right = side.gt(zero);
         let cx = L::select(right, L::splat(a), L::splat(-a));
-        let cap = concave(cx, zero, &self.cap, x, y, vx, vy, flat.not());
+        let cap = concave::<L, true, true>(cx, zero, &self.cap, x, y, vx, vy, flat.not());
         LaneHit {
             time: L::select(flat, flat_time, cap.time),
             px: L::select(flat, flat_x, cap.px),
