@@ -178,8 +178,8 @@ impl Kernel for FiniteDifference {
         let mut logs = LogProduct::new();
         let mut time = L::splat(0.0);
         for _ in 0..self.collisions {
-            step(g, law, &mut s, Shell::Own);
             time = time + step(g, law, &mut r, shell).hit.time;
+            step(g, law, &mut s, Shell::Own);
             let zr = r.coords();
             let zs = s.coords();
             let d: [L; 5] = five(|c| zs[c] - zr[c]);
