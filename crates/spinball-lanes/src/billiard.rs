@@ -1,5 +1,12 @@
-//! The public entry point: a table, a spin law, an instruction set and a
-//! thread count, and one method per kernel.
+//! The public entry point, [`LaneBilliard`]: a table, a spin law, an
+//! instruction set and a thread count, and one method per kernel.
+//!
+//! It exists so that callers (the ensemble engine of `spinball-analysis`,
+//! or anyone with a slice of initial conditions) see a safe, slice-in,
+//! outcomes-out API: it checks the inputs as the scalar path does, picks the
+//! concrete table and the instruction set once, splits the work over
+//! threads, and turns a trajectory that went non-finite into an error naming
+//! its initial condition.
 
 use spinball_core::{Billiard, SpinLaw, State, TangentVector};
 use spinball_geometry::Table;
@@ -134,7 +141,7 @@ impl LaneBilliard {
     ///
     /// The reference and shadow trajectories are bitwise the scalar ones;
     /// `Σ ln(δ/δ0)` differs from the scalar `largest_lyapunov` by rounding in
-    /// the product of the factors only (relative `~1e-14`; see the crate docs).
+    /// the product of the factors only (relative `~1e-13`; see the crate docs).
     ///
     /// # Errors
     /// [`LanesError::InvalidOption`] for zero collisions, a bad `delta0`,
@@ -161,10 +168,11 @@ impl LaneBilliard {
     /// The largest Lyapunov exponent by exact tangent dynamics, starting from
     /// `directions[i]`.
     ///
-    /// The reference trajectory is bitwise the scalar one; the tangent vector
-    /// is carried with one shared division per step and renormalised by
-    /// powers of two every few steps, so `Σ ln` agrees with the scalar
-    /// `largest_lyapunov` to rounding (relative `~1e-12`), not bitwise.
+    /// The reference trajectory and the tangent map are bitwise the scalar
+    /// ones (`Billiard::step_tangent`); the vector is rescaled by exact powers
+    /// of two every 8 collisions instead of normalised every collision, so
+    /// `Σ ln` agrees with the scalar `largest_lyapunov` to rounding, not
+    /// bitwise (see the crate docs for how closely).
     ///
     /// # Errors
     /// As [`lyapunov_fd`](Self::lyapunov_fd), without `delta0`.

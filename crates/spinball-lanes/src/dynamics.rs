@@ -3,10 +3,11 @@
 //!
 //! [`step`] is `Billiard::step` of `spinball-core` (cast, half-turn collision,
 //! energy-shell restore) written over [`Lanes`], operation for operation, so
-//! the reference trajectory of every kernel is bitwise the scalar one. The
-//! tangent map and the logarithm bookkeeping are where the lanes take a
-//! cheaper road than the scalar code (see each item), because their rounding
-//! does not feed back into the trajectory.
+//! the reference trajectory of every kernel is bitwise the scalar one;
+//! [`TangentStep`] is `TangentFrame` likewise. The bookkeeping of the growth
+//! ([`LogProduct`], [`pow2_renormalise`]) is where the lanes take a cheaper
+//! road than the scalar code: no logarithm and no square root in the loop.
+//! Its rounding does not feed back into the trajectory.
 
 use spinball_core::SpinLaw;
 
