@@ -58,6 +58,7 @@ pub mod saturation;
 pub mod spectrum;
 pub mod spectrum_ensemble;
 pub mod stats;
+pub mod sweep;
 
 pub use convergence::*;
 #[allow(unused_imports)]
@@ -83,3 +84,4 @@ pub use spectrum::*;
 pub use spectrum_ensemble::*;
 #[allow(unused_imports)]
 pub use stats::*;
+pub use sweep::*;
