@@ -37,6 +37,15 @@ impl Law {
         }
     }
 
+    /// All lanes set if α > 0. The spin updates are selected with it rather
+    /// than branched on, which keeps a step one basic block for the
+    /// compiler's scheduler (the mask is loop-invariant and hoisted).
+    #[inline(always)]
+    pub fn coupled<L: Lanes>(&self) -> L::Mask {
+        let flag = if self.coupled { 1.0 } else { 0.0 };
+        L::splat(flag).gt(L::splat(0.0))
+    }
+
     /// `|V|² = |v|² + α u²`, in `SpinLaw::norm2`'s order.
     #[inline(always)]
     pub fn norm2<L: Lanes>(&self, vx: L, vy: L, u: L) -> L {
@@ -114,14 +123,15 @@ pub(crate) fn step<G: Geom, L: Lanes>(
     let k = ((vx * tx + vy * ty) - u * law.alpha) * law.delta;
     let vx1 = tx * k - vx;
     let vy1 = ty * k - vy;
-    let u1 = if law.coupled { -u - k } else { u };
+    let coupled = law.coupled::<L>();
+    let u1 = L::select(coupled, -u - k, u);
     // One Newton step back onto the shell.
     let inv_shell = match shell {
         Shell::Fixed(inv) => inv,
         Shell::Own => L::splat(1.0) / law.norm2(vx, vy, u),
     };
     let c = L::splat(1.5) - law.norm2(vx1, vy1, u1) * 0.5 * inv_shell;
-    b.u = if law.coupled { u1 * c } else { u1 };
+    b.u = L::select(coupled, u1 * c, u1);
     b.vx = vx1 * c;
     b.vy = vy1 * c;
     b.x = hit.px;
@@ -166,11 +176,7 @@ impl<L: Lanes> TangentStep<L> {
             (
                 k * ((vt * nx + vn * tx) * law.neg_one_beta + gu * nx),
                 k * ((vt * ny + vn * ty) * law.neg_one_beta + gu * ny),
-                if law.coupled {
-                    k * law.delta * vn
-                } else {
-                    L::splat(0.0)
-                },
+                L::select(law.coupled::<L>(), k * law.delta * vn, L::splat(0.0)),
             )
         } else {
             let z = L::splat(0.0);
@@ -209,7 +215,7 @@ impl<L: Lanes> TangentStep<L> {
         let kk = ((dvx * tx + dvy * ty) - du * law.alpha) * law.delta;
         let mut dvx_new = tx * kk - dvx;
         let mut dvy_new = ty * kk - dvy;
-        let mut du_new = if law.coupled { -du - kk } else { du };
+        let mut du_new = L::select(law.coupled::<L>(), -du - kk, du);
         if G::CURVED {
             dvx_new = dvx_new + ds * self.curvature_dvx;
             dvy_new = dvy_new + ds * self.curvature_dvy;
