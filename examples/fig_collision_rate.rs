@@ -279,7 +279,7 @@ fn run(cli: &Cli) -> Result<(), BoxError> {
         .panel(nu_log)
         .panel(per_coll)
         .panel(lambda)
-        .save_png(&png, 1400, 1100)?;
+        .save_png(&png, 1300, 1020)?;
 
     let settings = json!({
         "method": "fd",
