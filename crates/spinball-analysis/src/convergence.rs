@@ -7,13 +7,17 @@
 //!   an integrable table it decays like `ln t / t` (finite differences pick
 //!   up the linear shear), on a chaotic one it levels off at `λ`.
 //! - [`convergence_estimates`]: the ensemble estimate of `λ` after each of
-//!   several collision counts (`10⁴, 5·10⁴, 10⁵, 5·10⁵` in the paper). Every
-//!   initial condition is run **once**, to the largest count, and read at the
-//!   smaller ones from its running exponent; that reading is bitwise the
-//!   exponent a separate run of that length gives (same start, same shadow
-//!   direction, same arithmetic up to that collision), so one nested run
-//!   costs what the longest column costs alone, and the columns differ only by
-//!   run length, not by sampling noise of different initial conditions.
+//!   several collision counts (`10⁴, 5·10⁴, 10⁵, 5·10⁵` in the paper), all
+//!   over the **same** initial conditions, so the columns differ only by run
+//!   length, not by sampling noise. With the scalar engine every initial
+//!   condition is run once, to the largest count, and read at the smaller
+//!   ones from its running exponent ([`trajectory_checkpoints`]); that
+//!   reading is bitwise the exponent a separate run of that length gives
+//!   (same start, same shadow direction, same arithmetic up to that
+//!   collision), so the nested run costs what the longest column costs alone.
+//!   With the lane engine (the default) each column is its own ensemble run:
+//!   it costs the sum of the columns, but the lane kernels are several times
+//!   faster per step than one nested scalar run.
 //! - [`format_mean_sem`]: the paper's `0.183(1)` notation.
 
 use std::fmt::Write as _;
@@ -24,7 +28,7 @@ use rand::Rng;
 use spinball_core::{Billiard, Sampler, State, ic_rng};
 use spinball_geometry::{Boundary, TableVisitor};
 
-use crate::ensemble::{Ensemble, TrajectoryStats};
+use crate::ensemble::{Engine, Ensemble, TrajectoryStats};
 use crate::error::AnalysisError;
 use crate::lyapunov::{HistoryPoint, LyapunovOptions, Method, largest_lyapunov};
 use crate::parallel::map_indices;
@@ -174,24 +178,30 @@ fn check_checkpoints(checkpoints: &[u64]) -> Result<(), AnalysisError> {
 
 /// The ensemble estimate of the largest exponent after each of
 /// `checkpoints` collisions (strictly increasing), for the table, law,
-/// sampler, seed, index range, method, threads and threshold of `ensemble`
-/// (its own `collisions` is not used). Estimate `k` has
+/// sampler, seed, index range, method, engine, threads and threshold of
+/// `ensemble` (its own `collisions` is not used). Estimate `k` has
 /// `collisions_per_ic = checkpoints[k]` and equals `ensemble` run with that
-/// many collisions, except for `wall_time_s`, which is the wall time of the
-/// whole nested run on every estimate (see the [module docs](self)).
+/// many collisions.
 ///
-/// Cost: `n_ics × max(checkpoints)` finite-difference (or tangent) steps.
+/// With [`Engine::Lanes`] (the default) every column is a separate
+/// [`Ensemble::run`] with its own `wall_time_s`; cost `n_ics × Σ checkpoints`
+/// steps in the lane kernels. With [`Engine::Scalar`] one nested run reads
+/// every column (see the [module docs](self)); cost `n_ics ×
+/// max(checkpoints)` scalar steps, and every estimate carries the wall time
+/// of the whole nested run.
 ///
 /// ```
 /// use spinball_analysis::{Engine, Ensemble, convergence_estimates};
 /// use spinball_core::SpinLaw;
 /// use spinball_geometry::Sinai;
 ///
-/// let ensemble = Ensemble::new(Sinai::new(2.0, 1.0)?, SpinLaw::new(0.5)?).with_ics(16).with_seed(3);
+/// let ensemble = Ensemble::new(Sinai::new(2.0, 1.0)?, SpinLaw::new(0.5)?)
+///     .with_ics(16)
+///     .with_seed(3)
+///     .with_engine(Engine::Scalar); // one nested run
 /// let columns = convergence_estimates(&ensemble, &[1_000, 4_000])?;
 /// assert_eq!(columns[1].collisions_per_ic, 4_000);
-/// // The checkpoints run the scalar path; so does this direct run.
-/// let direct = ensemble.with_engine(Engine::Scalar).with_collisions(1_000).run()?;
+/// let direct = ensemble.with_collisions(1_000).run()?;
 /// assert_eq!(columns[0].mean, direct.mean); // bitwise
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
@@ -206,6 +216,12 @@ pub fn convergence_estimates(
 ) -> Result<Vec<LyapunovEstimate>, AnalysisError> {
     check_checkpoints(checkpoints)?;
     ensemble.validate()?;
+    if ensemble.engine == Engine::Lanes {
+        return checkpoints
+            .iter()
+            .map(|&c| ensemble.clone().with_collisions(c).run())
+            .collect();
+    }
     let clock = Instant::now();
     let per_ic = ensemble.table.visit(RunCheckpoints {
         ensemble,
@@ -291,6 +307,34 @@ mod tests {
                 assert!((row.per_collision - direct.per_collision).abs() < 1e-14);
             }
         }
+    }
+
+    #[test]
+    fn both_engines_give_the_same_columns() {
+        let ensemble = Ensemble::new(Stadium::new(1.0).unwrap(), SpinLaw::new(0.3).unwrap())
+            .with_ics(12)
+            .with_seed(5);
+        let lanes = convergence_estimates(&ensemble, &[500, 2_000]).unwrap();
+        let scalar =
+            convergence_estimates(&ensemble.clone().with_engine(Engine::Scalar), &[500, 2_000])
+                .unwrap();
+        for (a, b) in lanes.iter().zip(&scalar) {
+            assert_eq!(a.collisions_per_ic, b.collisions_per_ic);
+            assert!(
+                (a.mean - b.mean).abs() <= 1e-12 * a.mean.abs(),
+                "{} {}",
+                a.mean,
+                b.mean
+            );
+        }
+        let direct = ensemble
+            .clone()
+            .with_engine(Engine::Scalar)
+            .with_collisions(2_000)
+            .run()
+            .unwrap();
+        assert_eq!(scalar[1].mean.to_bits(), direct.mean.to_bits());
+        assert!(convergence_estimates(&ensemble, &[2_000, 500]).is_err());
     }
 
     #[test]
