@@ -43,7 +43,7 @@ use spinball_lanes::{CHUNK, LaneBilliard, LanesError};
 use crate::error::AnalysisError;
 use crate::ftle::CHAOS_THRESHOLD;
 use crate::lyapunov::{LyapunovOptions, Method, largest_lyapunov, random_direction};
-use crate::parallel::{Threads, map_indices};
+use crate::parallel::{Threads, map_chunks};
 use crate::result::{LyapunovEstimate, StopReason};
 use crate::stats::Accumulator;
 
@@ -174,19 +174,11 @@ pub fn ftle_trajectories<B: Boundary + Sync>(
         return Err(AnalysisError::invalid("threads", "must be at least 1"));
     }
     let n = indices.end.saturating_sub(indices.start);
-    if n == 0 {
-        return Ok(Vec::new());
-    }
     // Chunks only balance the load; results do not depend on their size.
     let chunk = (n / (8 * threads.count() as u64)).clamp(1, 64);
-    let start = indices.start;
-    let end = indices.end;
-    let parts = map_indices(0..n.div_ceil(chunk), threads, |c| {
-        let lo = start + c * chunk;
-        let hi = (lo + chunk).min(end);
-        ftle_chunk(billiard, sampler, seed, lo..hi, collisions, method)
-    })?;
-    Ok(parts.into_iter().flatten().collect())
+    map_chunks(indices, chunk, threads, |range| {
+        ftle_chunk(billiard, sampler, seed, range, collisions, method)
+    })
 }
 
 /// A batch schedule for [`Ensemble::run_until`].
@@ -435,17 +427,11 @@ impl Ensemble {
         indices: Range<u64>,
     ) -> Result<Vec<TrajectoryStats>, AnalysisError> {
         LyapunovOptions::new(self.collisions, self.method).validate()?;
-        let n = indices.end.saturating_sub(indices.start);
-        if n == 0 {
-            return Ok(Vec::new());
-        }
         let lanes = LaneBilliard::new(self.table, self.law);
-        let chunk = CHUNK as u64;
-        let (start, end) = (indices.start, indices.end);
-        let parts = map_indices(0..n.div_ceil(chunk), self.threads, |c| {
-            let lo = start + c * chunk;
-            let hi = (lo + chunk).min(end);
-            let (starts, directions): (Vec<State>, Vec<TangentVector>) = (lo..hi)
+        map_chunks(indices, CHUNK as u64, self.threads, |range| {
+            let lo = range.start;
+            let (starts, directions): (Vec<State>, Vec<TangentVector>) = range
+                .clone()
                 .map(|i| {
                     let mut rng = ic_rng(self.seed, i);
                     let state = self.sampler.sample(&self.table, &self.law, &mut rng);
@@ -459,7 +445,7 @@ impl Ensemble {
                 Method::Tangent => lanes.lyapunov_tangent(&starts, &directions, self.collisions),
             }
             .map_err(|e| lane_error(e, lo))?;
-            Ok((lo..hi)
+            Ok(range
                 .zip(stretches)
                 .map(|(index, s)| TrajectoryStats {
                     index,
@@ -468,9 +454,8 @@ impl Ensemble {
                     time: s.time,
                     collisions: s.collisions,
                 })
-                .collect::<Vec<_>>())
-        })?;
-        Ok(parts.into_iter().flatten().collect())
+                .collect())
+        })
     }
 
     /// Run every initial condition in the index range.

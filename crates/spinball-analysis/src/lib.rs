@@ -74,7 +74,7 @@ pub use lyapunov::{
     HistoryPoint, Lyapunov, LyapunovOptions, Method, PAPER_DELTA0, largest_lyapunov,
     random_direction,
 };
-pub use parallel::{Threads, map_indices};
+pub use parallel::{Threads, map_chunks, map_indices};
 pub use q_pairs::*;
 #[allow(unused_imports)]
 pub use result::*;

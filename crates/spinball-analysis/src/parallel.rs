@@ -83,3 +83,33 @@ where
         indices.map(&f).collect()
     }
 }
+
+/// `f` over consecutive chunks of `indices` (each at most `chunk` long), in
+/// index order, on up to `threads` threads, with the chunks' results
+/// concatenated. Chunk size only balances the load (and lets a lane kernel
+/// fill its registers); when `f` treats each index on its own the result does
+/// not depend on it.
+///
+/// # Errors
+/// As [`map_indices`].
+pub fn map_chunks<T, F>(
+    indices: Range<u64>,
+    chunk: u64,
+    threads: Threads,
+    f: F,
+) -> Result<Vec<T>, AnalysisError>
+where
+    T: Send,
+    F: Fn(Range<u64>) -> Result<Vec<T>, AnalysisError> + Sync + Send,
+{
+    let n = indices.end.saturating_sub(indices.start);
+    if n == 0 {
+        return Ok(Vec::new());
+    }
+    let chunk = chunk.max(1);
+    let parts = map_indices(0..n.div_ceil(chunk), threads, |c| {
+        let lo = indices.start + c * chunk;
+        f(lo..(lo + chunk).min(indices.end))
+    })?;
+    Ok(parts.into_iter().flatten().collect())
+}
