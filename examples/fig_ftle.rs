@@ -11,8 +11,8 @@
 //! | mode      | ICs per α | collisions | wall time (2 cores) |
 //! |-----------|-----------|------------|---------------------|
 //! | `--quick` | 100       | 2 000      | < 1 s               |
-//! | default   | 2 000     | 5·10⁴      | about a minute      |
-//! | `--paper` | 10⁵       | 5·10⁴      | about an hour       |
+//! | default   | 2 000     | 5·10⁴      | about 10 s          |
+//! | `--paper` | 10⁵       | 5·10⁴      | about 5 minutes     |
 //!
 //! Paper sampler, finite-difference Benettin (δ0 = 1e-7), chaos threshold
 //! 0.01. Writes `ftle.png` (2 × 3 histograms), `ftle.csv` (every FTLE),
