@@ -13,7 +13,7 @@
 //! [`ic_rng(seed, i)`](spinball_core::ic_rng), and the same stream then draws
 //! the initial perturbation direction, so trajectory `i` does not depend on
 //! which thread runs it or on which other indices are in the run. Results come
-//! back in index order ([`map_indices`]) and every statistic is reduced
+//! back in index order ([`map_indices`](crate::map_indices)) and every statistic is reduced
 //! sequentially in that order. Hence an estimate is **bitwise identical for
 //! any thread count and for any split of the index range**
 //! ([`LyapunovEstimate::merge`] of `[0, k)` and `[k, n)` equals one run over
