@@ -430,7 +430,7 @@ impl Ensemble {
         indices: Range<u64>,
     ) -> Result<Vec<TrajectoryStats>, AnalysisError> {
         LyapunovOptions::new(self.collisions, self.method).validate()?;
-        let lanes = LaneBilliard::new(self.table, self.law);
+        let lanes = LaneBilliard::new(self.table, self.law).map_err(|e| lane_error(e, 0))?;
         map_chunks(indices, CHUNK as u64, self.threads, |range| {
             let lo = range.start;
             let (starts, directions): (Vec<State>, Vec<TangentVector>) = range

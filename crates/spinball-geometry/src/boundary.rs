@@ -10,36 +10,9 @@
 use glam::DVec2;
 use rand::Rng;
 
+pub use crate::aabb::Aabb;
 use crate::hit::Hit;
-
-/// An axis-aligned bounding box.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct Aabb {
-    /// Lower-left corner.
-    pub min: DVec2,
-    /// Upper-right corner.
-    pub max: DVec2,
-}
-
-impl Aabb {
-    /// The box spanned by two corners.
-    pub fn new(min: DVec2, max: DVec2) -> Self {
-        Aabb { min, max }
-    }
-    /// Centre of the box.
-    pub fn center(&self) -> DVec2 {
-        0.5 * (self.min + self.max)
-    }
-    /// Full extents (width, height).
-    pub fn size(&self) -> DVec2 {
-        self.max - self.min
-    }
-    /// The smallest box holding both.
-    pub fn union(&self, other: &Aabb) -> Aabb {
-        Aabb::new(self.min.min(other.min), self.max.max(other.max))
-    }
-}
+use crate::shape::Shape;
 
 /// Fixed direction for the default chord test, chosen to avoid passing exactly
 /// through the vertices of tables with rational coordinates.
@@ -103,9 +76,9 @@ pub trait Boundary {
         let hits = fan(self);
         let mut min = DVec2::splat(f64::INFINITY);
         let mut max = DVec2::splat(f64::NEG_INFINITY);
-        for p in hits {
-            min = min.min(p);
-            max = max.max(p);
+        for h in hits {
+            min = min.min(h.point);
+            max = max.max(h.point);
         }
         let pad = 0.01 * (max - min);
         Aabb::new(min - pad, max + pad)
@@ -124,7 +97,53 @@ pub trait Boundary {
     fn perimeter(&self) -> f64 {
         let hits = fan(self);
         let n = hits.len();
-        (0..n).map(|i| (hits[(i + 1) % n] - hits[i]).length()).sum()
+        (0..n)
+            .map(|i| (hits[(i + 1) % n].point - hits[i].point).length())
+            .sum()
+    }
+
+    /// Area of the table (holes excluded): the `|Q|` of mean-free-path and
+    /// collision-rate formulas.
+    ///
+    /// Default: the area of the polygon through a fan of hits (accurate to
+    /// about `1e-6` relative for smooth tables star-shaped about the
+    /// reference point). Built-in tables and [`SegmentTable`](crate::SegmentTable)
+    /// override it with the exact value.
+    fn area(&self) -> f64 {
+        let hits = fan(self);
+        let n = hits.len();
+        0.5 * (0..n)
+            .map(|i| hits[i].point.perp_dot(hits[(i + 1) % n].point))
+            .sum::<f64>()
+            .abs()
+    }
+
+    /// Total length of the curved walls: at α = 0 the share of collisions
+    /// on curved walls under the invariant measure is
+    /// `curved_length / perimeter` (the billiard map's measure `cos θ ds dθ`
+    /// gives each wall its share of the perimeter).
+    ///
+    /// Default: the fan polygon's edges whose two end hits are both on
+    /// curved walls (as accurate as [`perimeter`](Boundary::perimeter)).
+    /// Built-in tables and [`SegmentTable`](crate::SegmentTable) override it
+    /// with the exact value.
+    fn curved_length(&self) -> f64 {
+        let hits = fan(self);
+        let n = hits.len();
+        (0..n)
+            .filter(|&i| hits[i].is_curved() && hits[(i + 1) % n].is_curved())
+            .map(|i| (hits[(i + 1) % n].point - hits[i].point).length())
+            .sum()
+    }
+
+    /// The table as data, for engines that compile it (the vector-lane
+    /// kernels of `spinball-lanes`) and for the provenance of results.
+    ///
+    /// Default: `None` (the table runs on the scalar path only). Every
+    /// built-in table and [`SegmentTable`](crate::SegmentTable) returns its
+    /// [`Shape`]; a wrapper around one of them should forward it.
+    fn shape(&self) -> Option<Shape> {
+        None
     }
 
     /// Characteristic size of the table (half the diagonal of its bounding box).
@@ -165,14 +184,56 @@ pub trait Boundary {
     }
 }
 
-/// Hit points of a fan of rays from the reference point.
-fn fan<B: Boundary + ?Sized>(table: &B) -> Vec<DVec2> {
+/// A borrowed table is a table: `Billiard::new(&table, law)` runs without
+/// cloning it. Every method forwards, so exact overrides are kept.
+impl<B: Boundary> Boundary for &B {
+    #[inline]
+    fn cast(&self, origin: DVec2, velocity: DVec2) -> Option<Hit> {
+        (**self).cast(origin, velocity)
+    }
+    fn contains(&self, p: DVec2) -> bool {
+        (**self).contains(p)
+    }
+    fn contains_shrunk(&self, p: DVec2, shrink: f64) -> bool {
+        (**self).contains_shrunk(p, shrink)
+    }
+    fn aabb(&self) -> Aabb {
+        (**self).aabb()
+    }
+    fn reference_point(&self) -> DVec2 {
+        (**self).reference_point()
+    }
+    fn perimeter(&self) -> f64 {
+        (**self).perimeter()
+    }
+    fn area(&self) -> f64 {
+        (**self).area()
+    }
+    fn curved_length(&self) -> f64 {
+        (**self).curved_length()
+    }
+    fn shape(&self) -> Option<Shape> {
+        (**self).shape()
+    }
+    fn length_scale(&self) -> f64 {
+        (**self).length_scale()
+    }
+    fn sample_interior<R: Rng + ?Sized>(&self, rng: &mut R, shrink: f64) -> DVec2 {
+        (**self).sample_interior(rng, shrink)
+    }
+    fn birkhoff(&self, hit: &Hit, velocity: DVec2) -> (f64, f64) {
+        (**self).birkhoff(hit, velocity)
+    }
+}
+
+/// Hits of a fan of rays from the reference point.
+fn fan<B: Boundary + ?Sized>(table: &B) -> Vec<Hit> {
     const N: usize = 4096;
     let o = table.reference_point();
     (0..N)
         .filter_map(|i| {
             let dir = DVec2::from_angle(std::f64::consts::TAU * (i as f64 + 0.5) / N as f64);
-            table.cast(o, dir).map(|h| h.point)
+            table.cast(o, dir)
         })
         .collect()
 }

@@ -8,10 +8,12 @@ use std::f64::consts::TAU;
 
 use glam::DVec2;
 
+use crate::aabb::Aabb;
 use crate::arc::cast_concave_circle;
-use crate::boundary::{Aabb, Boundary};
+use crate::boundary::Boundary;
 use crate::error::{GeometryError, positive};
 use crate::hit::Hit;
+use crate::shape::Shape;
 
 /// The disk `x² + y² <= R²` (paper §II.A: `R = 1`).
 ///
@@ -73,5 +75,16 @@ impl Boundary for Circle {
 
     fn perimeter(&self) -> f64 {
         TAU * self.radius
+    }
+    fn area(&self) -> f64 {
+        0.5 * TAU * self.radius * self.radius
+    }
+    fn curved_length(&self) -> f64 {
+        TAU * self.radius
+    }
+    fn shape(&self) -> Option<Shape> {
+        Some(Shape::Circle {
+            radius: self.radius,
+        })
     }
 }

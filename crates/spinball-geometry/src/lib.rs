@@ -37,6 +37,7 @@
 //! - `serde`: `Serialize`/`Deserialize` for tables, walls and hits.
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
+pub mod aabb;
 pub mod arc;
 pub mod boundary;
 pub mod circle;
@@ -44,21 +45,26 @@ pub mod error;
 pub mod hit;
 pub mod line;
 pub mod rectangle;
+pub mod segment;
 pub mod segment_table;
+pub mod shape;
 pub mod sinai;
 pub mod stadium;
 pub mod table;
 
+pub use aabb::Aabb;
 pub use arc::{ArcSegment, cast_concave_circle, cast_convex_circle};
-pub use boundary::{Aabb, Boundary};
+pub use boundary::Boundary;
 pub use circle::Circle;
 pub use error::GeometryError;
 pub use hit::{Hit, WallId, tangent_of};
 pub use line::{LineSegment, WallHit, cast_line};
 pub use rectangle::Rectangle;
-pub use segment_table::{Segment, SegmentTable};
+pub use segment::Segment;
+pub use segment_table::SegmentTable;
+pub use shape::Shape;
 pub use sinai::Sinai;
 pub use stadium::Stadium;
-pub use table::{Table, TableSpecError, TableVisitor};
+pub use table::{Built, Table, TableSpecError, TableVisitor};
 
 pub use glam::DVec2;

@@ -3,9 +3,11 @@
 
 use glam::DVec2;
 
-use crate::boundary::{Aabb, Boundary};
+use crate::aabb::Aabb;
+use crate::boundary::Boundary;
 use crate::error::{GeometryError, positive};
 use crate::hit::{Hit, WallId};
+use crate::shape::Shape;
 
 /// The rectangle `[-l, l] × [-h, h]` (paper §II.A: `l = h = 1` for Lyapunov
 /// runs, `l = 1.5, h = 1` for pictures).
@@ -133,5 +135,17 @@ impl Boundary for Rectangle {
 
     fn perimeter(&self) -> f64 {
         4.0 * (self.l + self.h)
+    }
+    fn area(&self) -> f64 {
+        4.0 * self.l * self.h
+    }
+    fn curved_length(&self) -> f64 {
+        0.0
+    }
+    fn shape(&self) -> Option<Shape> {
+        Some(Shape::Rectangle {
+            l: self.l,
+            h: self.h,
+        })
     }
 }

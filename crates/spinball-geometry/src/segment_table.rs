@@ -35,79 +35,13 @@
 
 use glam::DVec2;
 
-use crate::arc::ArcSegment;
-use crate::boundary::{Aabb, Boundary};
+use crate::aabb::Aabb;
+use crate::boundary::Boundary;
 use crate::error::GeometryError;
 use crate::hit::{Hit, WallId};
 use crate::line::{LineSegment, WallHit};
-
-/// One wall of a [`SegmentTable`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub enum Segment {
-    /// A flat wall.
-    Line(LineSegment),
-    /// A circular wall (concave or convex by the sign of its sweep).
-    Arc(ArcSegment),
-}
-
-impl Segment {
-    /// First point.
-    pub fn start(&self) -> DVec2 {
-        match self {
-            Segment::Line(l) => l.start(),
-            Segment::Arc(a) => a.start(),
-        }
-    }
-    /// Last point.
-    pub fn end(&self) -> DVec2 {
-        match self {
-            Segment::Line(l) => l.end(),
-            Segment::Arc(a) => a.end(),
-        }
-    }
-    /// Length of the wall.
-    pub fn length(&self) -> f64 {
-        match self {
-            Segment::Line(l) => l.length(),
-            Segment::Arc(a) => a.length(),
-        }
-    }
-    /// Signed curvature (`0` flat, `-1/R` concave, `+1/R` convex).
-    pub fn curvature(&self) -> f64 {
-        match self {
-            Segment::Line(_) => 0.0,
-            Segment::Arc(a) => a.curvature(),
-        }
-    }
-    #[inline]
-    fn cast(&self, origin: DVec2, v: DVec2, slack: f64) -> Option<WallHit> {
-        match self {
-            Segment::Line(l) => l.cast(origin, v, slack),
-            Segment::Arc(a) => a.cast(origin, v, slack),
-        }
-    }
-    /// Twice the signed area between the chord and the wall (zero for a line).
-    fn bulge2(&self) -> f64 {
-        match self {
-            Segment::Line(_) => 0.0,
-            Segment::Arc(a) => a.radius() * a.radius() * (a.sweep() - a.sweep().sin()),
-        }
-    }
-    fn aabb(&self) -> Aabb {
-        let (s, e) = (self.start(), self.end());
-        let mut b = Aabb::new(s.min(e), s.max(e));
-        if let Segment::Arc(a) = self {
-            for dir in [DVec2::X, DVec2::Y, DVec2::NEG_X, DVec2::NEG_Y] {
-                let p = a.center() + dir * a.radius();
-                if a.covers(p, 0.0) {
-                    b = b.union(&Aabb::new(p, p));
-                }
-            }
-        }
-        b
-    }
-}
+use crate::segment::Segment;
+use crate::shape::Shape;
 
 /// A table bounded by user-given walls. See the [module docs](self).
 ///
@@ -118,6 +52,8 @@ impl Segment {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SegmentTable {
     walls: Vec<Segment>,
+    /// Number of walls of the outer loop, then of each hole.
+    loops: Vec<usize>,
     /// Arc length at the start of each wall.
     bases: Vec<f64>,
     perimeter: f64,
@@ -192,6 +128,7 @@ impl SegmentTable {
                 });
             }
         }
+        let lens: Vec<usize> = loops.iter().map(|lp| lp.len()).collect();
         let walls: Vec<Segment> = loops.into_iter().flatten().copied().collect();
         let mut bases = Vec::with_capacity(walls.len());
         let mut s = 0.0;
@@ -201,6 +138,7 @@ impl SegmentTable {
         }
         Ok(SegmentTable {
             walls,
+            loops: lens,
             bases,
             perimeter: s,
             aabb,
@@ -237,8 +175,37 @@ impl SegmentTable {
     }
 
     /// The walls, in id order.
+    #[must_use]
     pub fn walls(&self) -> &[Segment] {
         &self.walls
+    }
+
+    /// The outer loop (counter-clockwise), as given to the constructor.
+    #[must_use]
+    pub fn outer(&self) -> &[Segment] {
+        &self.walls[..self.loops[0]]
+    }
+
+    /// The holes (each clockwise), as given to the constructor.
+    #[must_use]
+    pub fn holes(&self) -> Vec<&[Segment]> {
+        let mut start = self.loops[0];
+        self.loops[1..]
+            .iter()
+            .map(|&n| {
+                let hole = &self.walls[start..start + n];
+                start += n;
+                hole
+            })
+            .collect()
+    }
+
+    /// The length tolerance of the casts: hits within it of a wall's end
+    /// count, and a ball within it behind a wall is on the wall
+    /// (`64 ε` times the table size).
+    #[must_use]
+    pub fn slack(&self) -> f64 {
+        self.slack
     }
 }
 
@@ -282,5 +249,30 @@ impl Boundary for SegmentTable {
 
     fn perimeter(&self) -> f64 {
         self.perimeter
+    }
+
+    /// Exact: Green's theorem over every loop (holes count negative).
+    fn area(&self) -> f64 {
+        0.5 * self
+            .walls
+            .iter()
+            .map(|w| w.start().perp_dot(w.end()) + w.bulge2())
+            .sum::<f64>()
+    }
+
+    /// Exact: the summed length of the arcs.
+    fn curved_length(&self) -> f64 {
+        self.walls
+            .iter()
+            .filter(|w| matches!(w, Segment::Arc(_)))
+            .map(Segment::length)
+            .sum()
+    }
+
+    fn shape(&self) -> Option<Shape> {
+        Some(Shape::Segments {
+            outer: self.outer().to_vec(),
+            holes: self.holes().into_iter().map(<[Segment]>::to_vec).collect(),
+        })
     }
 }

@@ -6,11 +6,13 @@ use std::f64::consts::TAU;
 
 use glam::DVec2;
 
+use crate::aabb::Aabb;
 use crate::arc::cast_convex_circle;
-use crate::boundary::{Aabb, Boundary, earlier};
+use crate::boundary::{Boundary, earlier};
 use crate::error::{GeometryError, positive};
 use crate::hit::Hit;
 use crate::rectangle::cast_box;
+use crate::shape::Shape;
 
 /// The square `[-l, l]²` minus the open disk of radius `r` at the origin
 /// (paper §II.A: `l = 2`, `r = 1`; scans over `r`).
@@ -103,5 +105,18 @@ impl Boundary for Sinai {
 
     fn perimeter(&self) -> f64 {
         8.0 * self.l + TAU * self.r
+    }
+    /// `4L² − πR²`.
+    fn area(&self) -> f64 {
+        4.0 * self.l * self.l - 0.5 * TAU * self.r * self.r
+    }
+    fn curved_length(&self) -> f64 {
+        TAU * self.r
+    }
+    fn shape(&self) -> Option<Shape> {
+        Some(Shape::Sinai {
+            l: self.l,
+            r: self.r,
+        })
     }
 }

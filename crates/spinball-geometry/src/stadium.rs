@@ -5,10 +5,12 @@ use std::f64::consts::PI;
 
 use glam::DVec2;
 
+use crate::aabb::Aabb;
 use crate::arc::cast_concave_circle;
-use crate::boundary::{Aabb, Boundary};
+use crate::boundary::Boundary;
 use crate::error::{GeometryError, positive};
 use crate::hit::Hit;
+use crate::shape::Shape;
 
 /// The stadium: flat walls `y = ±1` for `|x| <= a` joined by semicircular caps
 /// of radius 1 centred at `(±a, 0)` (paper §II.A; `a = 1` unless scanning).
@@ -105,5 +107,15 @@ impl Boundary for Stadium {
 
     fn perimeter(&self) -> f64 {
         4.0 * self.a + 2.0 * PI
+    }
+    /// `4a + π` (unit caps).
+    fn area(&self) -> f64 {
+        4.0 * self.a + PI
+    }
+    fn curved_length(&self) -> f64 {
+        2.0 * PI
+    }
+    fn shape(&self) -> Option<Shape> {
+        Some(Shape::Stadium { a: self.a })
     }
 }

@@ -14,7 +14,8 @@ use thiserror::Error;
 use crate::boundary::{Aabb, Boundary};
 use crate::error::GeometryError;
 use crate::hit::Hit;
-use crate::{Circle, Rectangle, Sinai, Stadium};
+use crate::shape::Shape;
+use crate::{Circle, Rectangle, SegmentTable, Sinai, Stadium};
 
 /// One of the built-in tables.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -124,6 +125,30 @@ impl Boundary for Table {
             Table::Sinai(t) => t.perimeter(),
         }
     }
+    fn area(&self) -> f64 {
+        match self {
+            Table::Circle(t) => t.area(),
+            Table::Rectangle(t) => t.area(),
+            Table::Stadium(t) => t.area(),
+            Table::Sinai(t) => t.area(),
+        }
+    }
+    fn curved_length(&self) -> f64 {
+        match self {
+            Table::Circle(t) => t.curved_length(),
+            Table::Rectangle(t) => t.curved_length(),
+            Table::Stadium(t) => t.curved_length(),
+            Table::Sinai(t) => t.curved_length(),
+        }
+    }
+    fn shape(&self) -> Option<Shape> {
+        match self {
+            Table::Circle(t) => t.shape(),
+            Table::Rectangle(t) => t.shape(),
+            Table::Stadium(t) => t.shape(),
+            Table::Sinai(t) => t.shape(),
+        }
+    }
 }
 
 /// Why a table description string could not be read.
@@ -208,11 +233,37 @@ impl FromStr for Table {
 impl fmt::Display for Table {
     /// The spec string that [`FromStr`] reads back.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Table::Circle(t) => write!(f, "circle:R={}", t.radius()),
-            Table::Rectangle(t) => write!(f, "rectangle:L={},H={}", t.l(), t.h()),
-            Table::Stadium(t) => write!(f, "stadium:a={}", t.a()),
-            Table::Sinai(t) => write!(f, "sinai:L={},R={}", t.l(), t.r()),
+        match self.shape() {
+            Some(shape) => shape.fmt(f),
+            None => Ok(()),
         }
+    }
+}
+
+/// A table rebuilt from its [`Shape`]: a built-in table or a segment table.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Built {
+    /// One of the four built-in tables.
+    Table(Table),
+    /// A table built from segments.
+    Segments(SegmentTable),
+}
+
+impl Shape {
+    /// Rebuild the table this shape describes (validated as its constructor
+    /// validates it).
+    ///
+    /// # Errors
+    /// The constructor's [`GeometryError`].
+    pub fn build(&self) -> Result<Built, GeometryError> {
+        Ok(match self {
+            Shape::Circle { radius } => Built::Table(Circle::new(*radius)?.into()),
+            Shape::Rectangle { l, h } => Built::Table(Rectangle::new(*l, *h)?.into()),
+            Shape::Stadium { a } => Built::Table(Stadium::new(*a)?.into()),
+            Shape::Sinai { l, r } => Built::Table(Sinai::new(*l, *r)?.into()),
+            Shape::Segments { outer, holes } => {
+                Built::Segments(SegmentTable::with_holes(outer.clone(), holes.clone())?)
+            }
+        })
     }
 }

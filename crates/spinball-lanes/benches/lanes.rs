@@ -56,6 +56,7 @@ fn kernels(c: &mut Criterion) {
             .measurement_time(Duration::from_secs(3));
         for isa in Isa::available() {
             let lanes = LaneBilliard::new(table, law)
+                .unwrap()
                 .with_isa(isa)
                 .expect("available");
             g.bench_function(BenchmarkId::from_parameter(isa), |b| match kernel {
@@ -85,7 +86,7 @@ fn tables(c: &mut Criterion) {
     ];
     for table in tables {
         let (starts, _) = inputs(&table, &law);
-        let lanes = LaneBilliard::new(table, law);
+        let lanes = LaneBilliard::new(table, law).unwrap();
         g.bench_function(BenchmarkId::from_parameter(table.name()), |b| {
             b.iter(|| lanes.trajectories(black_box(&starts), COLLISIONS))
         });

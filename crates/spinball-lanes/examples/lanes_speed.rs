@@ -115,7 +115,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         a.table, a.alpha, a.ics, a.collisions, a.threads, a.repeat
     );
     for isa in &a.isas {
-        let lanes = LaneBilliard::new(a.table, law)
+        let lanes = LaneBilliard::new(a.table, law)?
             .with_isa(*isa)?
             .with_threads(a.threads)?;
         for k in &a.kernels {

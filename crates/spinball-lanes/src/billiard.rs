@@ -9,7 +9,7 @@
 //! its initial condition.
 
 use spinball_core::{Billiard, SpinLaw, State, TangentVector};
-use spinball_geometry::Table;
+use spinball_geometry::{Boundary, Shape, Table};
 
 use crate::dynamics::Law;
 use crate::error::LanesError;
@@ -31,8 +31,10 @@ pub const MAX_QR_INTERVAL: u32 = 32;
 
 /// A spinning billiard whose ensembles run in vector lanes.
 ///
-/// Holds a built-in [`Table`] (any of `Circle`, `Rectangle`, `Stadium`,
-/// `Sinai`, or the enum), a [`SpinLaw`], the instruction-set level
+/// Holds a table with a lane form (any table whose [`Boundary::shape`] is
+/// `Some`: the built-in `Circle`, `Rectangle`, `Stadium`, `Sinai`, the
+/// [`Table`] enum, a `SegmentTable`, or a reference to one), a [`SpinLaw`],
+/// the instruction-set level
 /// ([`Isa::detect`] unless set) and a thread count (1 unless set). Every
 /// method takes a slice of initial conditions of any length and returns one
 /// outcome per initial condition, **in input order**; an outcome depends only
@@ -45,7 +47,7 @@ pub const MAX_QR_INTERVAL: u32 = 32;
 /// use spinball_lanes::LaneBilliard;
 ///
 /// let law = SpinLaw::new(0.5)?;
-/// let lanes = LaneBilliard::new(Stadium::new(1.0)?, law);
+/// let lanes = LaneBilliard::new(Stadium::new(1.0)?, law)?;
 /// let starts: Vec<State> = (0..10)
 ///     .map(|i| State::new(DVec2::new(0.1 * i as f64 - 0.5, 0.2), DVec2::new(0.6, 0.7), 0.3))
 ///     .collect();
@@ -60,24 +62,38 @@ pub const MAX_QR_INTERVAL: u32 = 32;
 /// assert_eq!(flights[3].end, *ball.state());
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LaneBilliard {
-    table: Table,
+#[derive(Debug, Clone, PartialEq)]
+pub struct LaneBilliard<B = Table> {
+    table: B,
+    shape: Shape,
     law: SpinLaw,
     isa: Isa,
     threads: usize,
 }
 
-impl LaneBilliard {
+/// Whether `table` can run in lanes: it has a [`Shape`] the kernels compile.
+/// Every built-in table and every `SegmentTable` can.
+#[must_use]
+pub fn has_lane_form<B: Boundary + ?Sized>(table: &B) -> bool {
+    table.shape().is_some()
+}
+
+impl<B: Boundary> LaneBilliard<B> {
     /// `table` and `law`, at the fastest instruction set of this CPU, on one
     /// thread.
-    pub fn new(table: impl Into<Table>, law: SpinLaw) -> Self {
-        LaneBilliard {
-            table: table.into(),
+    ///
+    /// # Errors
+    /// [`LanesError::NoLaneForm`] for a table without a [`Shape`] (run it on
+    /// the scalar path).
+    pub fn new(table: B, law: SpinLaw) -> Result<Self, LanesError> {
+        let shape = table.shape().ok_or(LanesError::NoLaneForm)?;
+        Ok(LaneBilliard {
+            table,
+            shape,
             law,
             isa: Isa::detect(),
             threads: 1,
-        }
+        })
     }
 
     /// Use instruction-set level `isa` (for tests and benchmarks; results do
@@ -104,8 +120,12 @@ impl LaneBilliard {
     }
 
     /// The table.
-    pub fn table(&self) -> &Table {
+    pub fn table(&self) -> &B {
         &self.table
+    }
+    /// The table's lane form.
+    pub fn shape(&self) -> &Shape {
+        &self.shape
     }
     /// The spin law.
     pub fn law(&self) -> &SpinLaw {
@@ -225,7 +245,7 @@ impl LaneBilliard {
     }
 
     fn check_starts(&self, starts: &[State]) -> Result<(), LanesError> {
-        let billiard = Billiard::new(self.table, self.law);
+        let billiard = Billiard::new(&self.table, self.law);
         for (index, s) in starts.iter().enumerate() {
             billiard
                 .launch(*s)
@@ -256,11 +276,12 @@ impl LaneBilliard {
     /// Dispatch once on the table, split over threads, check the outcomes.
     fn run<K: Kernel>(&self, k: &K, ins: &[K::In]) -> Result<Vec<K::Out>, LanesError> {
         let law = Law::new(&self.law);
-        let out = match &self.table {
-            Table::Circle(t) => self.split(k, &LaneCircle::new(t), &law, ins),
-            Table::Rectangle(t) => self.split(k, &LaneRectangle::new(t), &law, ins),
-            Table::Stadium(t) => self.split(k, &LaneStadium::new(t), &law, ins),
-            Table::Sinai(t) => self.split(k, &LaneSinai::new(t), &law, ins),
+        let out = match &self.shape {
+            Shape::Circle { radius } => self.split(k, &LaneCircle::new(*radius), &law, ins),
+            Shape::Rectangle { l, h } => self.split(k, &LaneRectangle::new(*l, *h), &law, ins),
+            Shape::Stadium { a } => self.split(k, &LaneStadium::new(*a), &law, ins),
+            Shape::Sinai { l, r } => self.split(k, &LaneSinai::new(*l, *r), &law, ins),
+            Shape::Segments { .. } => return Err(LanesError::NoLaneForm),
         };
         match out.iter().position(|o| !K::is_sound(o)) {
             Some(index) => Err(LanesError::NonFinite { index }),

@@ -28,6 +28,14 @@ pub enum LanesError {
         /// The launch error.
         source: LaunchError,
     },
+    /// The table has no lane form ([`Boundary::shape`] is `None`): run it on
+    /// the scalar path.
+    ///
+    /// [`Boundary::shape`]: spinball_geometry::Boundary::shape
+    #[error(
+        "the table has no lane form (its Boundary::shape() is None); run it on the scalar path"
+    )]
+    NoLaneForm,
     /// A trajectory (or its shadow or tangent vectors) became non-finite: no
     /// wall ahead, a shadow separation of zero, or a vector that collapsed.
     /// Where the scalar path fails it fails too; run that initial condition

@@ -12,8 +12,6 @@
 //!
 //! [`Boundary::cast`]: spinball_geometry::Boundary::cast
 
-use spinball_geometry::{Circle, Rectangle, Sinai, Stadium};
-
 use crate::lanes::{Lanes, MaskOps};
 
 /// The next wall hit of `N` balls.
@@ -219,8 +217,7 @@ pub(crate) struct LaneCircle {
 }
 
 impl LaneCircle {
-    pub fn new(t: &Circle) -> Self {
-        let r = t.radius();
+    pub fn new(r: f64) -> Self {
         LaneCircle {
             round: Round::new(r),
             k: -1.0 / r,
@@ -255,8 +252,8 @@ pub(crate) struct LaneRectangle {
 }
 
 impl LaneRectangle {
-    pub fn new(t: &Rectangle) -> Self {
-        LaneRectangle { l: t.l(), h: t.h() }
+    pub fn new(l: f64, h: f64) -> Self {
+        LaneRectangle { l, h }
     }
 }
 
@@ -280,8 +277,7 @@ pub(crate) struct LaneStadium {
 }
 
 impl LaneStadium {
-    pub fn new(t: &Stadium) -> Self {
-        let a = t.a();
+    pub fn new(a: f64) -> Self {
         // The scalar table's tolerance, recomputed from the public `a` with
         // the same expression (the agreement tests check the hits match).
         let slack = 64.0 * f64::EPSILON * (a + 1.0);
@@ -341,10 +337,9 @@ pub(crate) struct LaneSinai {
 }
 
 impl LaneSinai {
-    pub fn new(t: &Sinai) -> Self {
-        let r = t.r();
+    pub fn new(l: f64, r: f64) -> Self {
         LaneSinai {
-            l: t.l(),
+            l,
             disk: Round::new(r),
             k: 1.0 / r,
         }
@@ -374,7 +369,7 @@ impl Geom for LaneSinai {
 mod tests {
     use rand::{Rng, SeedableRng};
     use rand_pcg::Pcg64;
-    use spinball_geometry::{Boundary, DVec2, Hit};
+    use spinball_geometry::{Boundary, Circle, DVec2, Hit, Rectangle, Sinai, Stadium};
 
     use super::*;
 
@@ -437,7 +432,7 @@ mod tests {
             let t = Circle::new(r).unwrap();
             check(
                 &t,
-                &LaneCircle::new(&t),
+                &LaneCircle::new(t.radius()),
                 &[
                     (d(0.0, 0.0), d(1.0, 0.0)),
                     (d(r, 0.0), d(0.0, 1.0)),
@@ -454,7 +449,7 @@ mod tests {
             let t = Rectangle::new(l, h).unwrap();
             check(
                 &t,
-                &LaneRectangle::new(&t),
+                &LaneRectangle::new(t.l(), t.h()),
                 &[
                     (d(0.0, 0.0), d(l, h)),
                     (d(0.0, 0.0), d(-l, -h)),
@@ -474,7 +469,7 @@ mod tests {
             let t = Stadium::new(a).unwrap();
             check(
                 &t,
-                &LaneStadium::new(&t),
+                &LaneStadium::new(t.a()),
                 &[
                     (d(0.0, 0.0), d(a, 1.0)),
                     (d(0.0, 0.0), d(-a, -1.0)),
@@ -495,7 +490,7 @@ mod tests {
             let t = Sinai::new(l, r).unwrap();
             check(
                 &t,
-                &LaneSinai::new(&t),
+                &LaneSinai::new(t.l(), t.r()),
                 &[
                     (d(-l * 0.75, r), d(1.0, 0.0)),
                     (d(-l * 0.75, r * (1.0 - 1e-12)), d(1.0, 0.0)),

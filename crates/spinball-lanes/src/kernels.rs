@@ -381,7 +381,7 @@ mod tests {
     fn portable_lanes_match_one_lane() {
         let table = Stadium::new(1.0).unwrap();
         let law = SpinLaw::new(0.4).unwrap();
-        let g = LaneStadium::new(&table);
+        let g = LaneStadium::new(table.a());
         let l = Law::new(&law);
         let ins: Vec<(State, TangentVector)> = (0..11)
             .map(|i| {
@@ -436,7 +436,7 @@ mod tests {
         use crate::lanes::counted::{Counted, take};
         let table = Stadium::new(1.0).unwrap();
         let law = SpinLaw::new(0.5).unwrap();
-        let g = LaneStadium::new(&table);
+        let g = LaneStadium::new(table.a());
         let l = Law::new(&law);
         let s = Sampler::Paper.initial_state(&table, &law, 1, 0);
         let d = TangentVector::from_array([0.6, -0.2, 0.1, 0.7, 0.3]);

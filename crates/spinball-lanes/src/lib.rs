@@ -10,8 +10,9 @@
 //! chosen **at run time** ([`Isa`]), so a plain `cargo run --release` gets the
 //! fast path.
 //!
-//! [`LaneBilliard`] runs four kernels on any built-in table (`Circle`,
-//! `Rectangle`, `Stadium`, `Sinai`):
+//! [`LaneBilliard`] runs four kernels on any table with a lane form (a
+//! [`Shape`](spinball_geometry::Shape): the built-in `Circle`, `Rectangle`,
+//! `Stadium`, `Sinai`, and tables built from segments):
 //!
 //! | method | scalar specification | agreement |
 //! |---|---|---|
@@ -48,7 +49,7 @@
 //!         (start, random_direction(&mut rng))
 //!     })
 //!     .unzip();
-//! let lanes = LaneBilliard::new(table, law);
+//! let lanes = LaneBilliard::new(table, law)?;
 //! let fd = lanes.lyapunov_fd(&starts, &dirs, 1e-7, 2_000)?;
 //! let mean = fd.iter().map(|s| s.exponent()).sum::<f64>() / fd.len() as f64;
 //! assert!(mean > 0.1 && mean < 0.3); // λ(0.5) ≈ 0.18 in the paper
@@ -74,7 +75,7 @@ mod kernels;
 mod lanes;
 mod outcome;
 
-pub use billiard::{CHUNK, LaneBilliard, MAX_QR_INTERVAL};
+pub use billiard::{CHUNK, LaneBilliard, MAX_QR_INTERVAL, has_lane_form};
 pub use error::LanesError;
 pub use isa::Isa;
 pub use outcome::{Flight, SpectrumStretch, Stretch};

@@ -142,7 +142,12 @@ fn ics(table: &Table, law: &SpinLaw, n: u64) -> Vec<(State, TangentVector, Pcg64
 fn lanes_for(table: &Table, law: &SpinLaw) -> Vec<LaneBilliard> {
     Isa::available()
         .into_iter()
-        .map(|isa| LaneBilliard::new(*table, *law).with_isa(isa).unwrap())
+        .map(|isa| {
+            LaneBilliard::new(*table, *law)
+                .unwrap()
+                .with_isa(isa)
+                .unwrap()
+        })
         .collect()
 }
 
@@ -347,7 +352,7 @@ fn long_runs_agree_to_rounding_despite_chaos() {
     ics.truncate(8); // sampled starts only (see the module docs on grazing)
     let starts: Vec<State> = ics.iter().map(|x| x.0).collect();
     let dirs: Vec<TangentVector> = ics.iter().map(|x| x.1).collect();
-    let lanes = LaneBilliard::new(table, law);
+    let lanes = LaneBilliard::new(table, law).unwrap();
     for (method, got) in [
         (
             Method::default(),
@@ -409,6 +414,7 @@ fn instruction_sets_lane_counts_tails_and_threads_do_not_change_results() {
     };
     let reference = run(
         &LaneBilliard::new(table, law)
+            .unwrap()
             .with_isa(Isa::Baseline)
             .unwrap(),
         0..starts.len(),
@@ -416,6 +422,7 @@ fn instruction_sets_lane_counts_tails_and_threads_do_not_change_results() {
     for isa in Isa::available() {
         for threads in [1, 2, 3] {
             let lanes = LaneBilliard::new(table, law)
+                .unwrap()
                 .with_isa(isa)
                 .unwrap()
                 .with_threads(threads)
@@ -428,7 +435,7 @@ fn instruction_sets_lane_counts_tails_and_threads_do_not_change_results() {
         }
     }
     // One initial condition at a time (all tails) gives the same numbers.
-    let lanes = LaneBilliard::new(table, law);
+    let lanes = LaneBilliard::new(table, law).unwrap();
     let one_by_one: Vec<_> = (0..starts.len()).map(|i| run(&lanes, i..i + 1)).collect();
     let n = starts.len();
     for (i, r) in one_by_one.iter().enumerate() {
@@ -444,7 +451,7 @@ fn instruction_sets_lane_counts_tails_and_threads_do_not_change_results() {
 fn inputs_are_checked_like_the_scalar_path() {
     let table = Table::from(Stadium::new(1.0).unwrap());
     let law = SpinLaw::new(0.5).unwrap();
-    let lanes = LaneBilliard::new(table, law);
+    let lanes = LaneBilliard::new(table, law).unwrap();
     let good = State::new(DVec2::new(0.1, 0.2), DVec2::new(0.6, 0.7), 0.3);
     let outside = State::new(DVec2::new(5.0, 0.0), DVec2::new(0.6, 0.7), 0.3);
     let dir = TangentVector::from_array([0.0, 0.0, 1.0, 0.0, 0.0]);
@@ -468,11 +475,11 @@ fn inputs_are_checked_like_the_scalar_path() {
     let frame = [dir; 5];
     assert!(lanes.spectrum(&[good], &[frame], 10, 0).is_err());
     assert!(lanes.spectrum(&[good], &[frame], 10, 33).is_err());
-    assert!(lanes.with_threads(0).is_err());
+    assert!(lanes.clone().with_threads(0).is_err());
     assert!(lanes.trajectories(&[], 10).unwrap().is_empty());
     for isa in Isa::ALL {
         assert_eq!(
-            LaneBilliard::new(table, law).with_isa(isa).is_ok(),
+            LaneBilliard::new(table, law).unwrap().with_isa(isa).is_ok(),
             isa.is_available()
         );
     }
@@ -502,7 +509,10 @@ fn a_shadow_that_lands_on_the_reference_fails_as_in_the_scalar_path() {
     billiard.step(&mut b).unwrap();
     assert_eq!(a.state(), b.state());
     for isa in Isa::available() {
-        let lanes = LaneBilliard::new(table, law).with_isa(isa).unwrap();
+        let lanes = LaneBilliard::new(table, law)
+            .unwrap()
+            .with_isa(isa)
+            .unwrap();
         let r = lanes.lyapunov_fd(&[good, good, start], &[dir, dir, dir], 1e-7, 50);
         assert_eq!(r, Err(LanesError::NonFinite { index: 2 }), "{isa}");
     }
@@ -516,7 +526,9 @@ fn launch_check_uses_the_table() {
     let in_disk = State::new(DVec2::new(0.1, 0.1), DVec2::new(0.6, 0.7), 0.3);
     assert!(!table.contains(in_disk.position));
     assert!(matches!(
-        LaneBilliard::new(table, law).trajectories(&[in_disk], 5),
+        LaneBilliard::new(table, law)
+            .unwrap()
+            .trajectories(&[in_disk], 5),
         Err(LanesError::Launch { index: 0, .. })
     ));
 }
