@@ -49,7 +49,8 @@
 //! # Conventions
 //! Every convention (inward normals, `t × n = +z`, curvature signs, Birkhoff
 //! arc length, the exponent per unit time) is the paper's, restated in
-//! `PHYSICS.md`; each table's documentation says where its arc length starts.
+//! [`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#units-and-conventions); each table's
+//! documentation says where its arc length starts.
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
 pub use spinball_analysis as analysis;

@@ -1,5 +1,6 @@
 //! Validation against the paper's published numbers (Lund, Murugan, Shock,
-//! "Spinning Billiards and Chaos"; PHYSICS.md lists them).
+//! "Spinning Billiards and Chaos"; [`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#published-numbers)
+//! lists them).
 //!
 //! All runs use the paper's sampler and fixed seeds, so they are
 //! deterministic; the tolerances are statistical all the same: a value passes

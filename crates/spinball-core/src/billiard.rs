@@ -159,7 +159,8 @@ impl<B: Boundary> Billiard<B> {
     }
 
     /// One step that also carries tangent vectors with the exact linearised
-    /// flow (PHYSICS.md, "Exact tangent dynamics"): free flight `δx += τ δv`,
+    /// flow ([`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#exact-tangent-dynamics),
+    /// "Exact tangent dynamics"): free flight `δx += τ δv`,
     /// then the collision rule with its curvature term. The vectors are
     /// tangent vectors of the *flow*: after the step they describe a neighbour
     /// at the time of the reference collision.

@@ -4,7 +4,7 @@
 //! [`Pcg64`] stream ([`ic_rng`]), so an ensemble gives the same numbers
 //! whatever the thread count, chunking or sharding.
 //!
-//! Two samplers (PHYSICS.md, "Initial conditions"):
+//! Two samplers ([`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#initial-conditions), "Initial conditions"):
 //! - [`Sampler::Paper`]: the paper's convention, needed to reproduce its
 //!   numbers. Energy ½, position uniform in the table shrunk by 0.99 (Sinai:
 //!   outside 1.01 R), direction uniform, spin uniform in `±½/√α`, speed

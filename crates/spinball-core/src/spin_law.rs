@@ -1,4 +1,5 @@
-//! The spin collision law (paper eqs. 1–3), in the half-turn form of PHYSICS.md.
+//! The spin collision law (paper eqs. 1–3), in the half-turn form of
+//! [`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#half-turn-form).
 //!
 //! With `V = (v_x, v_y, √α u)` the collision is the rotation by π about the unit
 //! axis `a = (t_x, t_y, -√α)/√(1+α)`: `V' = 2(V·a)a − V`. This is the law the

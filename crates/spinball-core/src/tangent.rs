@@ -3,7 +3,7 @@
 //! Lyapunov exponents measure how fast neighbours separate. The paper does it
 //! with a shadow trajectory `δ0 = 1e-7` away; carrying the *linearised* flow
 //! instead needs no `δ0`, never lets the neighbour hit another wall, and is
-//! exact to rounding. The rule (PHYSICS.md; at α = 0 it is the
+//! exact to rounding. The rule ([`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#exact-tangent-dynamics); at α = 0 it is the
 //! Dellago–Posch–Hoover hard-disk rule) for a collision at `x_c` with
 //! pre-collision `v, u` and post-collision `v'`:
 //!

@@ -1,4 +1,4 @@
-//! Initial-condition samplers (PHYSICS.md, "Initial conditions"): the paper's
+//! Initial-condition samplers ([`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#initial-conditions), "Initial conditions"): the paper's
 //! convention and the microcanonical measure, and the per-IC random streams.
 
 mod common;

@@ -1,4 +1,4 @@
-//! The exact tangent map (PHYSICS.md, "Exact tangent dynamics") against
+//! The exact tangent map ([`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#exact-tangent-dynamics), "Exact tangent dynamics") against
 //! central finite differences of the full nonlinear flight–collision step, on
 //! the four paper tables at α ∈ {0, 0.3, 1, 5}; its determinant (−1 for α > 0,
 //! +1 at α = 0); and two identities every flow Jacobian must satisfy (the flow

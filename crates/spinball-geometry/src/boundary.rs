@@ -59,7 +59,7 @@ pub trait Boundary {
 
     /// Whether `p` lies in the table shrunk towards the box centre by
     /// `shrink` (in `(0, 1]`): the region the paper's initial conditions are
-    /// drawn from (PHYSICS.md, "Paper convention"). Default: `p` scaled back up
+    /// drawn from ([`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#paper-convention), "Paper convention"). Default: `p` scaled back up
     /// by `1/shrink` about the box centre lies in the table. Tables whose
     /// reference code uses another rule (the Sinai obstacle) override it.
     fn contains_shrunk(&self, p: DVec2, shrink: f64) -> bool {

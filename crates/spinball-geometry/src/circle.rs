@@ -1,7 +1,8 @@
 //! The circle table: the integrable reference case.
 //!
 //! A ball in a disk keeps its angular momentum about the centre and its angle of
-//! incidence; with spin the (v∥, u) map is an involution (PHYSICS.md), so the
+//! incidence; with spin the (v∥, u) map is an involution
+//! ([`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#half-turn-form)), so the
 //! motion stays regular for every α.
 
 use std::f64::consts::TAU;

@@ -57,7 +57,7 @@ impl ArcLength {
 
 /// The next wall hit of a ball in free flight (the answer of [`Boundary::cast`]).
 ///
-/// Conventions (PHYSICS.md, paper §II.B): `normal` is the unit normal pointing
+/// Conventions ([`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#units-and-conventions), paper §II.B): `normal` is the unit normal pointing
 /// **into** the table, the unit tangent is `t = (n_y, -n_x)` so that `t × n = +z`,
 /// and the curvature is signed by `dn/ds = k t`: `k = -1/R` on a concave arc
 /// (circle table, stadium caps), `+1/R` on a convex obstacle (Sinai disk), `0` on

@@ -25,7 +25,8 @@
 //! # Conventions
 //! Normals point into the table; the tangent is `t = (n_y, -n_x)` (`t × n = +z`);
 //! curvature is signed by `dn/ds = k t`, negative on concave walls. These are
-//! the conventions of `PHYSICS.md` and of the paper's eqs. (1)–(3).
+//! the conventions of [`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#units-and-conventions)
+//! and of the paper's eqs. (1)–(3).
 //!
 //! # Robustness
 //! Contacts are snapped onto the wall, flight times are never negative, walls

@@ -15,7 +15,8 @@ use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
 use spinball_geometry::{Boundary, Circle, DVec2, Rectangle, SegmentTable, Sinai, Stadium, Table};
 
-/// Closed-form perimeter from the table's parameters (PHYSICS.md, §II.A of the paper).
+/// Closed-form perimeter from the table's parameters
+/// ([`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#the-four-tables), §II.A of the paper).
 fn closed_form_perimeter(t: &Table) -> f64 {
     match t {
         Table::Circle(c) => 2.0 * PI * c.radius(),

@@ -42,7 +42,8 @@ pub struct Stretch {
 }
 
 impl Stretch {
-    /// λ per unit time, `Σ ln(stretch) / Σ Δt` (PHYSICS.md).
+    /// λ per unit time, `Σ ln(stretch) / Σ Δt`
+    /// ([`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#lyapunov-exponents)).
     pub fn exponent(&self) -> f64 {
         self.log_stretch / self.time
     }
