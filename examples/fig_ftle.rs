@@ -78,7 +78,9 @@ fn run(args: &FigureArgs) -> Result<(), Box<dyn Error>> {
     let billiard = Billiard::new(stadium, SpinLaw::new(ISLAND_ALPHA)?);
     let profiles = trajectory_profiles(
         &billiard,
-        island.sampler,
+        island
+            .sampler
+            .ok_or("sampled initial conditions expected")?,
         args.seed,
         island.indices(),
         collisions,

@@ -60,15 +60,17 @@ pub use spinball_geometry as geometry;
 /// The names most programs need: `use spinball::prelude::*;`.
 pub mod prelude {
     pub use spinball_analysis::{
-        AnalysisError, Engine, Ensemble, FtleDistribution, Lyapunov, LyapunovEstimate,
-        LyapunovOptions, Method, Spectrum, SpectrumOptions, StopReason, StopRule, Threads,
-        largest_lyapunov, lyapunov_spectrum,
+        AlphaSweep, AnalysisError, Control, Engine, Ensemble, FtleDistribution, Lyapunov,
+        LyapunovEstimate, LyapunovOptions, Measurement, Method, RunEvent, Spectrum,
+        SpectrumOptions, Starts, StopReason, StopRule, SweepRow, Threads, largest_lyapunov,
+        lyapunov_spectrum,
     };
     pub use spinball_core::{
         Ball, Billiard, Collision, EnergyMonitor, Observer, Recorder, Sampler, SpinLaw, State,
         TangentVector, ic_rng,
     };
     pub use spinball_geometry::{
-        Boundary, Circle, DVec2, Hit, Rectangle, SegmentTable, Sinai, Stadium, Table,
+        ArcSegment, Boundary, Circle, DVec2, Hit, LineSegment, Rectangle, Segment, SegmentTable,
+        Shape, Sinai, Stadium, Table,
     };
 }

@@ -254,7 +254,7 @@ pub fn run_jobs(cli: &Cli, jobs: Vec<Job>) -> Result<Vec<Curve>, BoxError> {
             job.label,
             t.table,
             t.method.name(),
-            t.sampler,
+            t.starts.sampler().map_or("states", |s| s.name()),
             t.seed,
             cli.thread_count()
         );

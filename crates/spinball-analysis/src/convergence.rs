@@ -21,18 +21,20 @@
 //! - [`format_mean_sem`]: the paper's `0.183(1)` notation.
 
 use std::fmt::Write as _;
-use std::ops::Range;
 use std::time::Instant;
 
 use rand::Rng;
-use spinball_core::{Billiard, Sampler, State, ic_rng};
-use spinball_geometry::{Boundary, TableVisitor};
+use spinball_core::{Billiard, Sampler, State};
+use spinball_geometry::Boundary;
 
-use crate::ensemble::{Engine, Ensemble, TrajectoryStats};
+use crate::engine::Engine;
+use crate::ensemble::Ensemble;
 use crate::error::AnalysisError;
 use crate::lyapunov::{HistoryPoint, LyapunovOptions, Method, largest_lyapunov};
 use crate::parallel::map_indices;
 use crate::result::{LyapunovEstimate, StopReason};
+use crate::starts::Starts;
+use crate::trajectory::TrajectoryStats;
 
 /// The running exponent of one trajectory at log-spaced collision counts.
 #[derive(Debug, Clone, PartialEq)]
@@ -135,11 +137,29 @@ pub fn trajectory_checkpoints<B: Boundary>(
     checkpoints: &[u64],
     method: Method,
 ) -> Result<Vec<TrajectoryStats>, AnalysisError> {
+    start_checkpoints(
+        billiard,
+        &Starts::Sampled(sampler),
+        seed,
+        index,
+        checkpoints,
+        method,
+    )
+}
+
+/// [`trajectory_checkpoints`] for initial condition `index` of `starts`.
+fn start_checkpoints<B: Boundary>(
+    billiard: &Billiard<B>,
+    starts: &Starts,
+    seed: u64,
+    index: u64,
+    checkpoints: &[u64],
+    method: Method,
+) -> Result<Vec<TrajectoryStats>, AnalysisError> {
     check_checkpoints(checkpoints)?;
     let last = *checkpoints.last().expect("checked non-empty");
     let stride = checkpoints.iter().fold(0, |g, &c| gcd(g, c));
-    let mut rng = ic_rng(seed, index);
-    let start = sampler.sample(billiard.table(), billiard.law(), &mut rng);
+    let (start, mut rng) = starts.draw(billiard.table(), billiard.law(), seed, index)?;
     let options = LyapunovOptions::new(last, method).with_history(stride);
     let lyap =
         largest_lyapunov(billiard, start, &options, &mut rng).map_err(|e| e.at_index(index))?;
@@ -210,23 +230,29 @@ fn check_checkpoints(checkpoints: &[u64]) -> Result<(), AnalysisError> {
 /// [`AnalysisError::InvalidOption`] for empty, non-increasing or zero
 /// checkpoints and as [`Ensemble::validate`]; then the first trajectory
 /// error.
-pub fn convergence_estimates(
-    ensemble: &Ensemble,
+pub fn convergence_estimates<B: Boundary + Clone + Sync>(
+    ensemble: &Ensemble<B>,
     checkpoints: &[u64],
 ) -> Result<Vec<LyapunovEstimate>, AnalysisError> {
     check_checkpoints(checkpoints)?;
     ensemble.validate()?;
-    if ensemble.engine == Engine::Lanes {
+    if ensemble.engine_used() == Engine::Lanes {
         return checkpoints
             .iter()
             .map(|&c| ensemble.clone().with_collisions(c).run())
             .collect();
     }
     let clock = Instant::now();
-    let per_ic = ensemble.table.visit(RunCheckpoints {
-        ensemble,
-        indices: ensemble.indices.clone(),
-        checkpoints,
+    let billiard = Billiard::new(&ensemble.table, ensemble.law);
+    let per_ic = map_indices(ensemble.indices.clone(), ensemble.threads, |i| {
+        start_checkpoints(
+            &billiard,
+            &ensemble.starts,
+            ensemble.seed,
+            i,
+            checkpoints,
+            ensemble.method,
+        )
     })?;
     let wall = clock.elapsed().as_secs_f64();
     checkpoints
@@ -235,30 +261,13 @@ pub fn convergence_estimates(
         .map(|(k, &c)| {
             let column = per_ic.iter().map(|row| row[k]).collect();
             LyapunovEstimate::from_trajectories(
-                &ensemble.clone().with_collisions(c),
+                &ensemble.clone().with_collisions(c).provenance(),
                 column,
                 wall,
                 StopReason::Completed,
             )
         })
         .collect()
-}
-
-struct RunCheckpoints<'a> {
-    ensemble: &'a Ensemble,
-    indices: Range<u64>,
-    checkpoints: &'a [u64],
-}
-
-impl TableVisitor for RunCheckpoints<'_> {
-    type Output = Result<Vec<Vec<TrajectoryStats>>, AnalysisError>;
-    fn visit<B: Boundary + Clone + Send + Sync>(self, table: &B) -> Self::Output {
-        let e = self.ensemble;
-        let billiard = Billiard::new(table.clone(), e.law);
-        map_indices(self.indices, e.threads, |i| {
-            trajectory_checkpoints(&billiard, e.sampler, e.seed, i, self.checkpoints, e.method)
-        })
-    }
 }
 
 /// `mean(SEM)` with `decimals` decimals and the SEM in units of the last
@@ -287,8 +296,9 @@ pub fn format_mean_sem(mean: f64, sem: f64, decimals: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ensemble::trajectory_ftle;
+    use crate::trajectory::trajectory_ftle;
     use spinball_core::SpinLaw;
+    use spinball_core::ic_rng;
     use spinball_geometry::{Circle, DVec2, Stadium};
 
     #[test]

@@ -19,7 +19,7 @@
 //! [`energy_trace`](crate::energy_trace) is the per-collision view (every
 //! `|E_n − E_0|`, downsampled by windows) for the short-run figure.
 
-use spinball_core::{Billiard, EnergyMonitor, SpinLaw, State, StepError};
+use spinball_core::{Billiard, Collision, EnergyMonitor, Observer, SpinLaw, State, StepError};
 use spinball_geometry::{Boundary, DVec2};
 
 use crate::error::AnalysisError;
@@ -201,6 +201,94 @@ pub fn component_law_energy_history<B: Boundary>(
         initial_energy: e0,
         points,
     })
+}
+
+/// One point of an [`EnergyTrace`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct EnergyPoint {
+    /// Collisions so far (the end of the window).
+    pub collisions: u64,
+    /// Largest `|E_n − E_0|` over the window of `stride` collisions ending
+    /// here (the maximum, so downsampling hides no spike).
+    pub deviation: f64,
+}
+
+/// An [`Observer`] of the absolute energy deviation `|E_n − E_0|` (paper,
+/// appendix "Energy conservation", eq. 4), keeping one point per `stride`
+/// collisions.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct EnergyTrace {
+    law: SpinLaw,
+    e0: f64,
+    stride: u64,
+    seen: u64,
+    window: f64,
+    /// One point per `stride` collisions.
+    pub points: Vec<EnergyPoint>,
+    /// Largest `|E_n − E_0|` over the whole run.
+    pub max_deviation: f64,
+}
+
+impl EnergyTrace {
+    /// Compare with the energy of `start` under `law`, one point every
+    /// `stride` collisions.
+    ///
+    /// # Errors
+    /// [`AnalysisError::InvalidOption`] for `stride = 0`.
+    pub fn new(law: SpinLaw, start: &State, stride: u64) -> Result<Self, AnalysisError> {
+        if stride == 0 {
+            return Err(AnalysisError::invalid("stride", "must be > 0"));
+        }
+        Ok(EnergyTrace {
+            law,
+            e0: start.energy(&law),
+            stride,
+            seen: 0,
+            window: 0.0,
+            points: Vec::new(),
+            max_deviation: 0.0,
+        })
+    }
+
+    /// The reference energy `E_0`.
+    pub fn initial_energy(&self) -> f64 {
+        self.e0
+    }
+}
+
+impl Observer for EnergyTrace {
+    #[inline]
+    fn observe(&mut self, _: &Collision, after: &State) {
+        let d = (after.energy(&self.law) - self.e0).abs();
+        self.seen += 1;
+        self.window = self.window.max(d);
+        self.max_deviation = self.max_deviation.max(d);
+        if self.seen.is_multiple_of(self.stride) {
+            self.points.push(EnergyPoint {
+                collisions: self.seen,
+                deviation: self.window,
+            });
+            self.window = 0.0;
+        }
+    }
+}
+
+/// The [`EnergyTrace`] of the trajectory from `start`.
+///
+/// # Errors
+/// [`AnalysisError::InvalidOption`] for `stride = 0`; dynamics errors.
+pub fn energy_trace<B: Boundary>(
+    billiard: &Billiard<B>,
+    start: State,
+    collisions: u64,
+    stride: u64,
+) -> Result<EnergyTrace, AnalysisError> {
+    let mut trace = EnergyTrace::new(*billiard.law(), &start, stride)?;
+    let mut ball = billiard.launch(start)?;
+    billiard.run(&mut ball, collisions, &mut trace)?;
+    Ok(trace)
 }
 
 #[cfg(test)]

@@ -32,6 +32,19 @@ pub enum AnalysisError {
         /// The step error.
         source: StepError,
     },
+    /// The lane kernels found a trajectory going non-finite where the scalar
+    /// path, rerun on the same initial condition, did not fail. Never seen;
+    /// report it, and run the ensemble with `Engine::Scalar` meanwhile.
+    #[error(
+        "initial condition {index}: the lane kernels went non-finite but the scalar path did not (run with Engine::Scalar and report this)"
+    )]
+    EngineMismatch {
+        /// Index of the initial condition.
+        index: u64,
+    },
+    /// An observer stopped the run before any estimate could be formed.
+    #[error("the run was cancelled before two initial conditions finished")]
+    Cancelled,
     /// Invalid table.
     #[error(transparent)]
     Geometry(#[from] GeometryError),

@@ -28,10 +28,10 @@ use std::ops::Range;
 use spinball_core::{Billiard, Sampler, ic_rng};
 use spinball_geometry::Boundary;
 
-use crate::ensemble::TrajectoryStats;
 use crate::error::AnalysisError;
 use crate::parallel::{Threads, map_indices};
 use crate::stats::Accumulator;
+use crate::trajectory::TrajectoryStats;
 
 /// Where one trajectory collides and how it starts.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -8,16 +8,30 @@
 //!   time and per collision, with an optional running history;
 //! - [`lyapunov_spectrum`]: all five exponents (exact, or the paper's
 //!   finite-difference variant, whose fifth exponent is explained there);
-//! - [`Ensemble`]: many initial conditions run in parallel, giving a
+//! - [`Ensemble`]: many initial conditions on **any table** (a built-in
+//!   one, a [`SegmentTable`](spinball_geometry::SegmentTable), your own
+//!   [`Boundary`](spinball_geometry::Boundary)) run in parallel, in vector
+//!   lanes when the table has a lane form, giving a
 //!   [`LyapunovEstimate`] with mean, SEM, median, conditional mean, chaotic
 //!   fraction, collision rate, wall time, seed and every parameter, bitwise
 //!   identical for any thread count and any split of the index range, with a
-//!   [`StopRule`] that stops at a target relative SEM or a time budget;
+//!   [`StopRule`] that stops at a target relative SEM or a time budget, all
+//!   through one observed driver ([`Ensemble::run_observed`]: progress
+//!   events, cancellation, stop reasons);
+//! - [`AlphaSweep`]: λ(α) curves, with [`SweepRow`] records for CSV/JSON;
 //! - [`FtleDistribution`]: histograms, moments, chaotic fraction over a band of
 //!   thresholds, the Datseris–Hupe–Fleischmann product;
-//! - diagnostics of the paper's mechanism: phase-space separation,
-//!   collision rate, wall transitions and |ΔQ| ([`WallStatistics`]), curved
-//!   share, energy traces.
+//! - diagnostics of the paper's mechanism: phase-space separation
+//!   ([`phase_space_separation`]), collision rate ([`CollisionRate`],
+//!   [`liouville_collision_rate`]), wall transitions and |ΔQ|
+//!   ([`WallStatistics`]), curved share ([`curved_share`]), energy traces.
+//!
+//! # Layers
+//! Modules build on each other without circles: statistics and FTLE
+//! distributions; single trajectories (`lyapunov`, `spectrum`,
+//! `trajectory`); results and their provenance; the ensemble and its
+//! initial conditions; the run driver; sweeps, convergence tables and the
+//! diagnostics on top.
 //!
 //! ```
 //! use spinball_analysis::{Ensemble, Method};
@@ -43,45 +57,81 @@
 //! - `serde`: `Serialize`/`Deserialize` for options, results and accumulators.
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
+pub mod alpha_sweep;
+pub mod collision_rate;
 pub mod convergence;
-pub mod diagnostics;
+pub mod curved_share;
+pub mod driver;
 pub mod energy;
+pub mod engine;
 pub mod ensemble;
 pub mod error;
 pub mod ftle;
 pub mod islands;
 pub mod lyapunov;
+pub mod measurement;
 pub mod parallel;
+pub mod provenance;
 pub mod q_pairs;
 pub mod result;
+pub mod rows;
 pub mod saturation;
+pub mod separation;
 pub mod spectrum;
 pub mod spectrum_ensemble;
+pub mod starts;
 pub mod stats;
-pub mod sweep;
+pub mod stop_rule;
+#[cfg(test)]
+mod test_support;
+pub mod trajectory;
+pub mod wall_statistics;
 
-pub use convergence::*;
-#[allow(unused_imports)]
-pub use diagnostics::*;
-pub use energy::*;
-#[allow(unused_imports)]
-pub use ensemble::*;
+pub use alpha_sweep::{AlphaSweep, SweepEvent, linspace};
+pub use collision_rate::{
+    CollisionRate, RateSummary, collision_rate_summary, initial_mean_speed,
+    liouville_collision_rate, per_collision_exponent, rate_summary,
+};
+pub use convergence::{
+    LcnTrace, convergence_estimates, format_mean_sem, lcn_trace, trajectory_checkpoints,
+};
+pub use curved_share::{CurvedShare, curved_share, perimeter_curved_share};
+pub use driver::{BatchProgress, Control, RunEvent, RunObserver, Silent};
+pub use energy::{
+    EnergyCheckpoint, EnergyHistory, EnergyPoint, EnergyTrace, component_law_energy_history,
+    energy_history, energy_trace, log_checkpoints,
+};
+pub use engine::Engine;
+pub use ensemble::Ensemble;
 pub use error::AnalysisError;
-#[allow(unused_imports)]
-pub use ftle::*;
-pub use islands::*;
+pub use ftle::{CHAOS_THRESHOLD, ChaoticBand, ChaoticFraction, FtleDistribution, THRESHOLD_BAND};
+pub use islands::{
+    ClassComparison, ClassSummary, MeanSem, TrajectoryProfile, compare_classes, trajectory_profile,
+    trajectory_profiles,
+};
 pub use lyapunov::{
     HistoryPoint, Lyapunov, LyapunovOptions, Method, PAPER_DELTA0, largest_lyapunov,
     random_direction,
 };
+pub use measurement::{Measurement, dhf_product, normalised, paired_difference};
 pub use parallel::{Threads, map_chunks, map_indices};
-pub use q_pairs::*;
-#[allow(unused_imports)]
-pub use result::*;
-pub use saturation::*;
-#[allow(unused_imports)]
-pub use spectrum::*;
-pub use spectrum_ensemble::*;
-#[allow(unused_imports)]
-pub use stats::*;
-pub use sweep::*;
+pub use provenance::{Provenance, TableRecord};
+pub use q_pairs::{PairClass, QPair, QPairStatistics, q_pair_statistics};
+pub use result::{LyapunovEstimate, StopReason};
+pub use rows::{CSV_HEADER, SweepRow, csv_string, sweep_rows, write_csv};
+pub use saturation::{SeparationSummary, summarize_separation};
+pub use separation::{
+    LinearFit, Separation, SeparationOptions, phase_space_separation, separation_growth,
+};
+pub use spectrum::{MAX_QR_INTERVAL, Spectrum, SpectrumOptions, lyapunov_spectrum};
+pub use spectrum_ensemble::{SpectrumEstimate, spectrum_ensemble};
+pub use starts::Starts;
+pub use stats::{
+    Accumulator, Histogram, conditional_mean, count_above, fraction_above, median, quantile,
+    quantiles,
+};
+pub use stop_rule::StopRule;
+pub use trajectory::{TrajectoryStats, ftle_trajectories, trajectory_ftle};
+pub use wall_statistics::{
+    DeltaQPopulation, TransitionRule, WallStatistics, wall_statistics, wall_statistics_ensemble,
+};

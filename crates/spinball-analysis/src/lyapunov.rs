@@ -10,7 +10,7 @@
 //!   multiplied up and their logarithm taken only every so often.
 //!
 //! Both report the exponent per unit time, `λ = Σ ln(stretch) / Σ Δt`
-//! (PHYSICS.md), and per collision. Over a fixed number of collisions this is
+//! ([`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#lyapunov-exponents)), and per collision. Over a fixed number of collisions this is
 //! the finite-time Lyapunov exponent (FTLE) of the trajectory.
 
 use rand::Rng;

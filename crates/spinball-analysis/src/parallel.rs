@@ -23,6 +23,17 @@ pub enum Threads {
 }
 
 impl Threads {
+    /// Check the setting.
+    ///
+    /// # Errors
+    /// [`AnalysisError::InvalidOption`] for `Fixed(0)`.
+    pub fn validate(&self) -> Result<(), AnalysisError> {
+        if *self == Threads::Fixed(0) {
+            return Err(AnalysisError::invalid("threads", "must be at least 1"));
+        }
+        Ok(())
+    }
+
     /// Number of threads this setting means on this machine.
     pub fn count(&self) -> usize {
         match *self {

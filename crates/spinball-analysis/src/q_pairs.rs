@@ -40,8 +40,8 @@
 use spinball_core::{Billiard, Collision, Observer, SpinLaw, State};
 use spinball_geometry::{Boundary, WallId};
 
-use crate::diagnostics::DeltaQPopulation;
 use crate::error::AnalysisError;
+use crate::wall_statistics::DeltaQPopulation;
 
 /// What two consecutive collisions have in common. See the [module docs](self).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

@@ -15,18 +15,20 @@ use std::ops::Range;
 
 use spinball_core::Sampler;
 
-use crate::ensemble::{Ensemble, TrajectoryStats};
+use crate::engine::Engine;
 use crate::error::AnalysisError;
 use crate::ftle::FtleDistribution;
 use crate::lyapunov::Method;
+use crate::provenance::{Provenance, TableRecord};
 use crate::stats::Accumulator;
+use crate::trajectory::TrajectoryStats;
 
 /// Why an ensemble run stopped.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum StopReason {
-    /// A plain run ([`Ensemble::run`]) over its whole index range.
+    /// A plain run ([`Ensemble::run`](crate::Ensemble::run)) over its whole index range.
     Completed,
     /// The stop rule's target `SEM/|mean|` was reached (deterministic for a
     /// given batch schedule).
@@ -37,16 +39,21 @@ pub enum StopReason {
     /// The stop rule ran out of initial conditions (the ensemble's index
     /// range) before reaching its target.
     RangeExhausted,
+    /// An observer asked the run to stop; the estimate covers the batches
+    /// finished before that.
+    Cancelled,
 }
 
 impl StopReason {
-    /// `completed`, `target_reached`, `time_budget` or `range_exhausted`.
+    /// `completed`, `target_reached`, `time_budget`, `range_exhausted` or
+    /// `cancelled`.
     pub fn name(&self) -> &'static str {
         match self {
             StopReason::Completed => "completed",
             StopReason::TargetReached => "target_reached",
             StopReason::TimeBudget => "time_budget",
             StopReason::RangeExhausted => "range_exhausted",
+            StopReason::Cancelled => "cancelled",
         }
     }
 }
@@ -58,7 +65,8 @@ impl fmt::Display for StopReason {
 }
 
 /// The ensemble estimate of the largest Lyapunov exponent, with its errors,
-/// cost and parameters. Built by [`Ensemble::run`] and [`Ensemble::run_until`].
+/// cost and parameters. Built by [`Ensemble::run`](crate::Ensemble::run)
+/// and [`Ensemble::run_until`](crate::Ensemble::run_until).
 ///
 /// All exponents are **per unit time** (paper §II.C); `per_collision_mean`
 /// and `collision_rate` give the per-collision view (paper appendix on the
@@ -104,22 +112,18 @@ pub struct LyapunovEstimate {
     pub wall_time_s: f64,
     /// Seed of the initial conditions ([`spinball_core::ic_rng`]).
     pub seed: u64,
-    /// Table, as a spec string that [`spinball_geometry::Table`] parses back
-    /// (e.g. `stadium:a=1`).
-    pub table: String,
+    /// The table (its shape, if it has one, and a name).
+    pub table: TableRecord,
     /// Spin parameter α.
     pub alpha: f64,
-    /// `fd` or `tangent`.
-    pub method: String,
-    /// Initial separation of the finite-difference method (`None` for tangent).
-    pub delta0: Option<f64>,
-    /// How initial conditions were drawn.
-    pub sampler: Sampler,
+    /// How the exponent was measured (with δ0 for finite differences).
+    pub method: Method,
+    /// How initial conditions were drawn (`None`: explicit states).
+    pub sampler: Option<Sampler>,
     /// Version of `spinball-analysis` that computed it.
     pub version: String,
-    /// Which implementation ran the trajectories (`lanes` or `scalar`).
-    #[cfg_attr(feature = "serde", serde(default))]
-    pub engine: String,
+    /// The implementation that ran the trajectories.
+    pub engine: Engine,
     /// Why the run stopped.
     pub stop: StopReason,
     /// Per-trajectory results, in index order.
@@ -127,21 +131,21 @@ pub struct LyapunovEstimate {
 }
 
 impl LyapunovEstimate {
-    /// The estimate for `trajectories` (contiguous indices, in order) computed
-    /// with the parameters of `ensemble`. This is how [`Ensemble::run`] builds
-    /// its result; use it for per-trajectory results computed elsewhere (a
-    /// faster kernel, another machine).
+    /// The estimate for `trajectories` (contiguous indices, in order)
+    /// computed with the parameters `run` (an ensemble's
+    /// [`provenance`](crate::Ensemble::provenance)). This is how an
+    /// ensemble run builds its result; use it for per-trajectory results
+    /// computed elsewhere (another kernel, another machine).
     ///
     /// # Errors
     /// [`AnalysisError::InvalidOption`] for fewer than two trajectories,
     /// indices that are not consecutive, or a non-finite exponent.
     pub fn from_trajectories(
-        ensemble: &Ensemble,
+        run: &Provenance,
         trajectories: Vec<TrajectoryStats>,
         wall_time_s: f64,
         stop: StopReason,
     ) -> Result<Self, AnalysisError> {
-        let (method, delta0) = method_parts(&ensemble.method);
         let mut estimate = LyapunovEstimate {
             mean: 0.0,
             sem: 0.0,
@@ -149,7 +153,7 @@ impl LyapunovEstimate {
             std: 0.0,
             min: 0.0,
             max: 0.0,
-            threshold: ensemble.threshold,
+            threshold: run.threshold,
             conditional_mean: None,
             chaotic_fraction: 0.0,
             chaotic_fraction_sem: 0.0,
@@ -158,16 +162,15 @@ impl LyapunovEstimate {
             total_time: 0.0,
             n_ics: 0,
             first_index: 0,
-            collisions_per_ic: ensemble.collisions,
+            collisions_per_ic: run.collisions_per_ic,
             wall_time_s,
-            seed: ensemble.seed,
-            table: ensemble.table.to_string(),
-            alpha: ensemble.law.alpha(),
-            method: method.to_string(),
-            delta0,
-            sampler: ensemble.sampler,
+            seed: run.seed,
+            table: run.table.clone(),
+            alpha: run.alpha,
+            method: run.method,
+            sampler: run.sampler,
             version: env!("CARGO_PKG_VERSION").to_string(),
-            engine: ensemble.engine.name().to_string(),
+            engine: run.engine,
             stop,
             trajectories,
         };
@@ -246,14 +249,8 @@ impl LyapunovEstimate {
         if self.alpha.to_bits() != other.alpha.to_bits() {
             return mismatch("alpha", &self.alpha, &other.alpha);
         }
-        if self.method != other.method
-            || self.delta0.map(f64::to_bits) != other.delta0.map(f64::to_bits)
-        {
-            return mismatch(
-                "methods",
-                &(&self.method, self.delta0),
-                &(&other.method, other.delta0),
-            );
+        if self.method != other.method {
+            return mismatch("methods", &self.method, &other.method);
         }
         if self.sampler != other.sampler {
             return mismatch("samplers", &self.sampler, &other.sampler);
@@ -297,6 +294,16 @@ impl LyapunovEstimate {
         merged.stop = second.stop;
         merged.recompute()?;
         Ok(merged)
+    }
+
+    /// The initial separation of the finite-difference method (`None` for
+    /// the tangent method).
+    #[must_use]
+    pub fn delta0(&self) -> Option<f64> {
+        match self.method {
+            Method::FiniteDifference { delta0 } => Some(delta0),
+            Method::Tangent => None,
+        }
     }
 
     /// The initial-condition indices covered, `first_index..first_index + n_ics`.
@@ -349,18 +356,11 @@ impl fmt::Display for LyapunovEstimate {
             self.chaotic_fraction,
             self.table,
             self.alpha,
-            self.method,
-            self.sampler,
+            self.method.name(),
+            self.sampler.map_or("states", |s| s.name()),
             self.n_ics,
             self.collisions_per_ic,
             self.wall_time_s
         )
-    }
-}
-
-fn method_parts(method: &Method) -> (&'static str, Option<f64>) {
-    match *method {
-        Method::FiniteDifference { delta0 } => (method.name(), Some(delta0)),
-        Method::Tangent => (method.name(), None),
     }
 }

@@ -14,8 +14,8 @@
 //! [`summarize_separation`] measures the plateau, when it is reached, and the
 //! slope of the growth before it.
 
-use crate::diagnostics::{LinearFit, Separation};
 use crate::error::AnalysisError;
+use crate::separation::{LinearFit, Separation};
 
 /// Growth and saturation of one [`Separation`] curve.
 #[derive(Debug, Clone, Copy, PartialEq)]

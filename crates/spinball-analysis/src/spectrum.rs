@@ -14,7 +14,7 @@
 //!   the spectrum is `(λ, 0, 0, 0, −λ)` up to finite-time error: the flow
 //!   direction and the energy direction are neutral, the middle exponent of
 //!   the volume-preserving, time-reversible 3-D collision map `(s, v∥, u)` is
-//!   zero, and the outer pair is `±λ` (PHYSICS.md). The 5×5 step Jacobian has
+//!   zero, and the outer pair is `±λ` ([`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#full-spectrum)). The 5×5 step Jacobian has
 //!   `|det| = 1`, so the sum vanishes to rounding at any run length.
 //! - [`Method::FiniteDifference`]: the paper's variant. Five shadow
 //!   trajectories start `δ0` from the reference along orthonormal directions
@@ -118,7 +118,7 @@ pub struct Spectrum {
     /// The same per collision, `Σ ln R_ii / collisions` (same order).
     pub per_collision: [f64; 5],
     /// Sum of the exponents per unit time (zero to rounding for the exact
-    /// method: the step Jacobian has `|det| = 1`, PHYSICS.md).
+    /// method: the step Jacobian has `|det| = 1`, [`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#exact-tangent-dynamics)).
     pub sum: f64,
     /// Total flight time of the reference trajectory.
     pub time: f64,
@@ -230,7 +230,7 @@ fn collapsed(i: usize, n: u64, what: &str) -> AnalysisError {
 }
 
 /// A random orthonormal frame of the 5-D state space.
-fn random_frame<R: Rng + ?Sized>(rng: &mut R) -> [TangentVector; 5] {
+pub(crate) fn random_frame<R: Rng + ?Sized>(rng: &mut R) -> [TangentVector; 5] {
     loop {
         let mut frame: [TangentVector; 5] = std::array::from_fn(|_| random_direction(rng));
         // Five random unit vectors are independent with probability 1; redraw
@@ -258,7 +258,7 @@ fn random_frame<R: Rng + ?Sized>(rng: &mut R) -> [TangentVector; 5] {
 /// α > 0 they are resolved only to a few `1e-4` per unit time: in the stadium
 /// `a = 1`, α = 0.5, the middle pair sits at `≈ ±5e-4` from `1e5` up to `1e7`
 /// collisions instead of shrinking. That split is not the dynamics (theory
-/// gives exactly zero, PHYSICS.md) but the arithmetic: it changes with the QR interval (`5.1e-4` at 1, `7.6e-4` at 16 collisions,
+/// gives exactly zero, [`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#full-spectrum)) but the arithmetic: it changes with the QR interval (`5.1e-4` at 1, `7.6e-4` at 16 collisions,
 /// where exact arithmetic gives identical products), and projecting the two
 /// exactly known neutral directions (the flow `(v, 0, 0)` and the energy
 /// direction `(0, v, u)`) out of the frame leaves a middle exponent of the
@@ -400,18 +400,38 @@ pub fn lyapunov_spectrum<B: Boundary, R: Rng + ?Sized>(
         }
     }
     let totals: [f64; 5] = std::array::from_fn(|i| logs[i].total());
-    let mut exponents: [f64; 5] = std::array::from_fn(|i| totals[i] / time);
-    let mut per_collision: [f64; 5] =
-        std::array::from_fn(|i| totals[i] / options.collisions as f64);
-    exponents.sort_by(|a, b| b.total_cmp(a));
-    per_collision.sort_by(|a, b| b.total_cmp(a));
-    Ok(Spectrum {
-        exponents,
-        per_collision,
-        sum: totals.iter().sum::<f64>() / time,
+    Ok(Spectrum::from_sums(
+        totals,
         time,
-        collisions: options.collisions,
-        method: options.method,
+        options.collisions,
+        options.method,
         floored,
-    })
+    ))
+}
+
+impl Spectrum {
+    /// The spectrum from the five summed logarithms `Σ ln R_ii` (in
+    /// Gram–Schmidt order), the total time and the collisions: what every
+    /// engine returns.
+    pub(crate) fn from_sums(
+        totals: [f64; 5],
+        time: f64,
+        collisions: u64,
+        method: Method,
+        floored: u64,
+    ) -> Self {
+        let mut exponents: [f64; 5] = std::array::from_fn(|i| totals[i] / time);
+        let mut per_collision: [f64; 5] = std::array::from_fn(|i| totals[i] / collisions as f64);
+        exponents.sort_by(|a, b| b.total_cmp(a));
+        per_collision.sort_by(|a, b| b.total_cmp(a));
+        Spectrum {
+            exponents,
+            per_collision,
+            sum: totals.iter().sum::<f64>() / time,
+            time,
+            collisions,
+            method,
+            floored,
+        }
+    }
 }

@@ -8,9 +8,9 @@ use spinball_analysis::{
     trajectory_ftle,
 };
 use spinball_core::{Billiard, Sampler, SpinLaw};
-use spinball_geometry::{Sinai, Stadium, Table};
+use spinball_geometry::{Boundary, Sinai, Stadium, Table};
 
-fn stadium(alpha: f64) -> Ensemble {
+fn stadium(alpha: f64) -> Ensemble<Stadium> {
     Ensemble::new(Stadium::new(1.0).unwrap(), SpinLaw::new(alpha).unwrap())
         .with_seed(2024)
         .with_collisions(500)
@@ -220,11 +220,12 @@ fn estimate_carries_its_parameters() {
         .with_threads(Threads::Fixed(1))
         .run()
         .unwrap();
-    assert_eq!(est.table, "sinai:L=2,R=1");
-    assert_eq!(est.table.parse::<Table>().unwrap(), table);
+    assert_eq!(est.table.name, "sinai:L=2,R=1");
+    assert_eq!(est.table.name.parse::<Table>().unwrap(), table);
+    assert_eq!(est.table.shape, table.shape());
     assert_eq!(est.alpha, 2.0);
-    assert_eq!((est.method.as_str(), est.delta0), ("fd", Some(1e-7)));
-    assert_eq!(est.sampler, Sampler::Microcanonical);
+    assert_eq!((est.method.name(), est.delta0()), ("fd", Some(1e-7)));
+    assert_eq!(est.sampler, Some(Sampler::Microcanonical));
     assert_eq!((est.seed, est.first_index, est.n_ics), (9, 100, 4));
     assert_eq!(est.indices(), 100..104);
     assert_eq!(est.collisions_per_ic, 200);

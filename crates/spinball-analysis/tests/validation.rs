@@ -31,7 +31,7 @@ const ICS_SPECULAR: u64 = 500;
 const ICS_SPIN: u64 = 3_000;
 
 fn estimate(table: impl Into<Table>, alpha: f64, ics: u64, collisions: u64) -> LyapunovEstimate {
-    Ensemble::new(table, SpinLaw::new(alpha).unwrap())
+    Ensemble::new(table.into(), SpinLaw::new(alpha).unwrap())
         .with_seed(SEED)
         .with_ics(ics)
         .with_collisions(collisions)
