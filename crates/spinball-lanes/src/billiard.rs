@@ -65,6 +65,14 @@ pub const MAX_QR_INTERVAL: u32 = 32;
 #[derive(Debug, Clone, PartialEq)]
 pub struct LaneBilliard<B = Table> {
     table: B,
+    runner: Runner,
+}
+
+/// Everything a run needs apart from the table's Rust type: the kernels
+/// are compiled here, once, in this crate, whatever table type a caller
+/// uses (a `LaneBilliard<B>` only checks the starts with `B`).
+#[derive(Debug, Clone, PartialEq)]
+struct Runner {
     shape: Shape,
     law: SpinLaw,
     isa: Isa,
@@ -89,10 +97,12 @@ impl<B: Boundary> LaneBilliard<B> {
         let shape = table.shape().ok_or(LanesError::NoLaneForm)?;
         Ok(LaneBilliard {
             table,
-            shape,
-            law,
-            isa: Isa::detect(),
-            threads: 1,
+            runner: Runner {
+                shape,
+                law,
+                isa: Isa::detect(),
+                threads: 1,
+            },
         })
     }
 
@@ -102,7 +112,7 @@ impl<B: Boundary> LaneBilliard<B> {
     /// # Errors
     /// [`LanesError::IsaUnavailable`] if this CPU cannot run it.
     pub fn with_isa(mut self, isa: Isa) -> Result<Self, LanesError> {
-        self.isa = isa.checked()?;
+        self.runner.isa = isa.checked()?;
         Ok(self)
     }
 
@@ -115,7 +125,7 @@ impl<B: Boundary> LaneBilliard<B> {
         if threads == 0 {
             return Err(LanesError::invalid("threads", "must be at least 1"));
         }
-        self.threads = threads;
+        self.runner.threads = threads;
         Ok(self)
     }
 
@@ -125,19 +135,19 @@ impl<B: Boundary> LaneBilliard<B> {
     }
     /// The table's lane form.
     pub fn shape(&self) -> &Shape {
-        &self.shape
+        &self.runner.shape
     }
     /// The spin law.
     pub fn law(&self) -> &SpinLaw {
-        &self.law
+        &self.runner.law
     }
     /// The instruction-set level the kernels run at.
     pub fn isa(&self) -> Isa {
-        self.isa
+        self.runner.isa
     }
     /// Threads per run.
     pub fn threads(&self) -> usize {
-        self.threads
+        self.runner.threads
     }
 
     /// `collisions` steps of the collision map from each start: the end
@@ -152,7 +162,7 @@ impl<B: Boundary> LaneBilliard<B> {
         collisions: u64,
     ) -> Result<Vec<Flight>, LanesError> {
         self.check_starts(starts)?;
-        self.run(&kernels::Plain { collisions }, starts)
+        self.runner.plain(starts, collisions)
     }
 
     /// The largest Lyapunov exponent by the paper's finite-difference
@@ -182,7 +192,7 @@ impl<B: Boundary> LaneBilliard<B> {
             ));
         }
         let ins = self.check_lcn(starts, directions, collisions)?;
-        self.run(&kernels::FiniteDifference { collisions, delta0 }, &ins)
+        self.runner.finite_difference(&ins, delta0, collisions)
     }
 
     /// The largest Lyapunov exponent by exact tangent dynamics, starting from
@@ -203,7 +213,7 @@ impl<B: Boundary> LaneBilliard<B> {
         collisions: u64,
     ) -> Result<Vec<Stretch>, LanesError> {
         let ins = self.check_lcn(starts, directions, collisions)?;
-        self.run(&kernels::Tangent { collisions }, &ins)
+        self.runner.tangent(&ins, collisions)
     }
 
     /// The Lyapunov spectrum by exact tangent dynamics: five vectors from
@@ -237,15 +247,11 @@ impl<B: Boundary> LaneBilliard<B> {
             }
         }
         let ins: Vec<_> = starts.iter().copied().zip(frames.iter().copied()).collect();
-        let k = kernels::Spectrum {
-            collisions,
-            qr_interval: u64::from(qr_interval),
-        };
-        self.run(&k, &ins)
+        self.runner.spectrum(&ins, collisions, qr_interval)
     }
 
     fn check_starts(&self, starts: &[State]) -> Result<(), LanesError> {
-        let billiard = Billiard::new(&self.table, self.law);
+        let billiard = Billiard::new(&self.table, self.runner.law);
         for (index, s) in starts.iter().enumerate() {
             billiard
                 .launch(*s)
@@ -271,6 +277,43 @@ impl<B: Boundary> LaneBilliard<B> {
             .copied()
             .zip(directions.iter().copied())
             .collect())
+    }
+}
+
+impl Runner {
+    // Not generic and not inlined: each kernel is compiled once, here.
+    fn plain(&self, ins: &[State], collisions: u64) -> Result<Vec<Flight>, LanesError> {
+        self.run(&kernels::Plain { collisions }, ins)
+    }
+
+    fn finite_difference(
+        &self,
+        ins: &[(State, TangentVector)],
+        delta0: f64,
+        collisions: u64,
+    ) -> Result<Vec<Stretch>, LanesError> {
+        self.run(&kernels::FiniteDifference { collisions, delta0 }, ins)
+    }
+
+    fn tangent(
+        &self,
+        ins: &[(State, TangentVector)],
+        collisions: u64,
+    ) -> Result<Vec<Stretch>, LanesError> {
+        self.run(&kernels::Tangent { collisions }, ins)
+    }
+
+    fn spectrum(
+        &self,
+        ins: &[(State, [TangentVector; 5])],
+        collisions: u64,
+        qr_interval: u32,
+    ) -> Result<Vec<SpectrumStretch>, LanesError> {
+        let k = kernels::Spectrum {
+            collisions,
+            qr_interval: u64::from(qr_interval),
+        };
+        self.run(&k, ins)
     }
 
     /// Dispatch once on the table, split over threads, check the outcomes.
