@@ -16,7 +16,7 @@
 //! biased), which `tests/energy.rs` of `spinball-core` measures at ≈ 7e-11
 //! after 10⁶ collisions in the stadium.
 //!
-//! [`energy_trace`](crate::energy_trace) is the per-collision view (every
+//! [`energy_trace`] is the per-collision view (every
 //! `|E_n − E_0|`, downsampled by windows) for the short-run figure.
 
 use spinball_core::{Billiard, Collision, EnergyMonitor, Observer, SpinLaw, State, StepError};

@@ -24,7 +24,7 @@
 //! - diagnostics of the paper's mechanism: phase-space separation
 //!   ([`phase_space_separation`]), collision rate ([`CollisionRate`],
 //!   [`liouville_collision_rate`]), wall transitions and |ΔQ|
-//!   ([`WallStatistics`]), curved share ([`curved_share`]), energy traces.
+//!   ([`WallStatistics`]), curved share ([`curved_share()`]), energy traces.
 //!
 //! # Layers
 //! Modules build on each other without circles: statistics and FTLE
