@@ -52,6 +52,7 @@
 //! [`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#units-and-conventions); each table's
 //! documentation says where its arc length starts.
 #![cfg_attr(docsrs, feature(doc_cfg))]
+#![forbid(unsafe_code)]
 
 pub use spinball_analysis as analysis;
 pub use spinball_core as dynamics;

@@ -56,6 +56,7 @@
 //!   the calling thread. Results do not depend on it.
 //! - `serde`: `Serialize`/`Deserialize` for options, results and accumulators.
 #![cfg_attr(docsrs, feature(doc_cfg))]
+#![forbid(unsafe_code)]
 
 pub mod alpha_sweep;
 pub mod collision_rate;

@@ -32,6 +32,7 @@
 //! - `serde`: `Serialize`/`Deserialize` for the law, states, balls, collisions
 //!   and samplers.
 #![cfg_attr(docsrs, feature(doc_cfg))]
+#![forbid(unsafe_code)]
 
 pub mod billiard;
 pub mod collision;

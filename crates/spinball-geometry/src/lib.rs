@@ -37,6 +37,7 @@
 //! # Features
 //! - `serde`: `Serialize`/`Deserialize` for tables, walls and hits.
 #![cfg_attr(docsrs, feature(doc_cfg))]
+#![forbid(unsafe_code)]
 
 pub mod aabb;
 pub mod arc;

@@ -11,6 +11,7 @@
 use spinball_core::{Billiard, SpinLaw, State, TangentVector};
 use spinball_geometry::{Boundary, Shape, Table};
 
+use crate::dispatch::Dispatch;
 use crate::dynamics::Law;
 use crate::error::LanesError;
 use crate::geom::{Geom, LaneCircle, LaneRectangle, LaneSinai, LaneStadium};

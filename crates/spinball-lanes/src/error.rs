@@ -1,16 +1,19 @@
 //! Why a lane run could not start or finish.
+//!
+//! One error type for the public API. It sits above [`isa`](crate::isa),
+//! whose own [`IsaError`] converts into it.
 
 use spinball_core::LaunchError;
 use thiserror::Error;
 
-use crate::isa::Isa;
+use crate::isa::{Isa, IsaError};
 
 /// A lane run that could not start or finish.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum LanesError {
     /// The instruction set asked for is not supported by this CPU.
-    #[error("instruction set `{0}` is not available on this CPU (available: {avail})", avail = available())]
+    #[error("{}", IsaError::Unavailable(*.0))]
     IsaUnavailable(Isa),
     /// An option or input is out of range.
     #[error("invalid option `{name}`: {reason}")]
@@ -59,10 +62,11 @@ impl LanesError {
     }
 }
 
-fn available() -> String {
-    Isa::available()
-        .iter()
-        .map(|i| i.name())
-        .collect::<Vec<_>>()
-        .join(", ")
+impl From<IsaError> for LanesError {
+    fn from(e: IsaError) -> Self {
+        match e {
+            IsaError::Unavailable(isa) => LanesError::IsaUnavailable(isa),
+            e @ IsaError::Unknown(_) => LanesError::invalid("isa", e.to_string()),
+        }
+    }
 }

@@ -1,25 +1,35 @@
-//! Choosing the instruction set at run time.
+//! The instruction-set levels, and the proofs that this CPU has them.
 //!
 //! A library cannot ask its users to build with `-C target-cpu=native`, and a
 //! binary built on one machine runs on others. So every kernel is compiled
 //! three times from the same generic source, each copy inside a function
-//! carrying `#[target_feature(enable = ...)]` for one level:
+//! carrying `#[target_feature(enable = ...)]` for one level (the entry points
+//! of the crate's `dispatch` module):
 //!
 //! | [`Isa`] | features enabled | vector width | used on |
 //! |---|---|---|---|
 //! | [`Isa::Avx512`] | `avx512f, avx512dq, avx512vl, avx512bw` | 8 × f64 | Zen 4/5, Xeon since Skylake-SP |
 //! | [`Isa::Avx2`] | `avx2` | 4 × f64 | x86-64 since Haswell / Zen 1 |
-//! | [`Isa::Baseline`] | what the target has by default (SSE2; NEON on aarch64) | 2 × f64 | everything |
+//! | [`Isa::Baseline`] | what the target has by default: SSE2 on x86-64 (and 32-bit x86 built with SSE2), plain `f64` lanes elsewhere | 2 × f64 (SSE2) | everything |
 //!
 //! [`Isa::detect`] asks the CPU once (`is_x86_feature_detected!`) and a run
 //! dispatches once per call, outside every loop. The lane code uses no fused
 //! multiply-add and no approximate reciprocal, so all three levels give
 //! **bitwise identical** results (tested): the choice changes the speed only.
+//!
+//! Running code compiled for a feature on a CPU without it is undefined
+//! behaviour. So the crate holds the fact "this CPU has AVX2" as a value: the
+//! zero-sized proofs `Avx2Cpu` and `Avx512Cpu` (crate-private) can only be
+//! made by detecting the features, the entry points compiled for a level
+//! take the level's proof, and the trait `ProvenBy` tells the compiler which
+//! lane types a proof allows (each lane type names the proof it needs).
+//!
+//! This module is the bottom layer of the crate: it uses no other module.
 
 use std::fmt;
 use std::str::FromStr;
 
-use crate::error::LanesError;
+use thiserror::Error;
 
 /// An instruction-set level the kernels are compiled for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -31,6 +41,27 @@ pub enum Isa {
     Avx2,
     /// The target's default instruction set (SSE2 on x86-64): always available.
     Baseline,
+}
+
+/// Why an [`Isa`] cannot be used (converts into
+/// [`LanesError`](crate::LanesError)).
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[non_exhaustive]
+pub enum IsaError {
+    /// The instruction set asked for is not supported by this CPU.
+    #[error("instruction set `{0}` is not available on this CPU (available: {avail})", avail = available_names())]
+    Unavailable(Isa),
+    /// A name `str::parse::<Isa>` does not know.
+    #[error("unknown instruction set `{0}` (expected avx512, avx2, baseline or auto)")]
+    Unknown(String),
+}
+
+fn available_names() -> String {
+    Isa::available()
+        .iter()
+        .map(|i| i.name())
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 impl Isa {
@@ -58,14 +89,9 @@ impl Isa {
         match self {
             Isa::Baseline => true,
             #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-            Isa::Avx512 => {
-                std::arch::is_x86_feature_detected!("avx512f")
-                    && std::arch::is_x86_feature_detected!("avx512dq")
-                    && std::arch::is_x86_feature_detected!("avx512vl")
-                    && std::arch::is_x86_feature_detected!("avx512bw")
-            }
+            Isa::Avx512 => Avx512Cpu::detect().is_some(),
             #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-            Isa::Avx2 => std::arch::is_x86_feature_detected!("avx2"),
+            Isa::Avx2 => Avx2Cpu::detect().is_some(),
             #[cfg(not(any(target_arch = "x86", target_arch = "x86_64")))]
             _ => false,
         }
@@ -83,12 +109,13 @@ impl Isa {
     /// `Ok(self)` if this CPU can run it.
     ///
     /// # Errors
-    /// [`LanesError::IsaUnavailable`].
-    pub fn checked(self) -> Result<Isa, LanesError> {
+    /// [`IsaError::Unavailable`] (which `?` turns into
+    /// [`LanesError::IsaUnavailable`](crate::LanesError::IsaUnavailable)).
+    pub fn checked(self) -> Result<Isa, IsaError> {
         if self.is_available() {
             Ok(self)
         } else {
-            Err(LanesError::IsaUnavailable(self))
+            Err(IsaError::Unavailable(self))
         }
     }
 }
@@ -100,7 +127,7 @@ impl fmt::Display for Isa {
 }
 
 impl FromStr for Isa {
-    type Err = LanesError;
+    type Err = IsaError;
     /// `avx512`, `avx2`, `baseline` (or `scalar`, `sse2`), or `auto` for
     /// [`Isa::detect`]. Does not check availability (see [`Isa::checked`]).
     fn from_str(s: &str) -> Result<Self, Self::Err> {
@@ -109,98 +136,75 @@ impl FromStr for Isa {
             "avx2" => Ok(Isa::Avx2),
             "baseline" | "scalar" | "sse2" => Ok(Isa::Baseline),
             "auto" | "detect" => Ok(Isa::detect()),
-            other => Err(LanesError::invalid(
-                "isa",
-                format!(
-                    "unknown instruction set `{other}` (expected avx512, avx2, baseline or auto)"
-                ),
-            )),
+            other => Err(IsaError::Unknown(other.to_string())),
         }
     }
 }
 
-/// Compile `run_chunks` for one instruction-set level.
+/// The features `Self` stands for are proven present by a `C`.
 ///
-/// The generic kernel is `#[inline(always)]` all the way down, so its whole
-/// body is compiled inside this function, with the level's features.
-macro_rules! isa_entry {
-    ($(#[$m:meta])* $name:ident, $features:literal) => {
-        $(#[$m])*
-        #[target_feature(enable = $features)]
-        pub(crate) fn $name<G: crate::geom::Geom, K: crate::kernels::Kernel, L: crate::lanes::Lanes>(
-            g: &G,
-            law: &crate::dynamics::Law,
-            k: &K,
-            ins: &[K::In],
-        ) -> Vec<K::Out> {
-            crate::kernels::run_chunks::<G, K, L>(g, law, k, ins)
-        }
-    };
+/// Every lane type names the proof its instructions need
+/// (`Lanes::Needs`); code that runs lanes takes a proof `C` and requires
+/// `L::Needs: ProvenBy<C>`, so the compiler refuses, say, AVX2 lanes in the
+/// baseline entry point. The relation is the features' implication: AVX-512F
+/// implies AVX2, and both imply the baseline.
+pub(crate) trait ProvenBy<C> {}
+
+/// The target's default instruction set, which every CPU the binary runs on
+/// has (the rest of the binary is compiled for it too): needs no detection.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Baseline;
+
+impl ProvenBy<Baseline> for Baseline {}
+
+/// Proof that this CPU has AVX2: made only by [`Avx2Cpu::detect`].
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Avx2Cpu(());
+
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+impl Avx2Cpu {
+    /// `Some` if and only if the CPU (and the OS, for the register state)
+    /// supports AVX2.
+    #[inline]
+    pub(crate) fn detect() -> Option<Avx2Cpu> {
+        std::arch::is_x86_feature_detected!("avx2").then_some(Avx2Cpu(()))
+    }
 }
 
 #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-isa_entry!(
-    /// The kernels compiled for AVX-512. Call only when
-    /// [`Isa::Avx512`]`.is_available()`.
-    on_avx512,
-    "avx512f,avx512dq,avx512vl,avx512bw"
-);
+impl ProvenBy<Avx2Cpu> for Baseline {}
 #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-isa_entry!(
-    /// The kernels compiled for AVX2. Call only when
-    /// [`Isa::Avx2`]`.is_available()`.
-    on_avx2,
-    "avx2"
-);
+impl ProvenBy<Avx2Cpu> for Avx2Cpu {}
 
-/// The kernels compiled for the target's baseline.
-pub(crate) fn on_baseline<
-    G: crate::geom::Geom,
-    K: crate::kernels::Kernel,
-    L: crate::lanes::Lanes,
->(
-    g: &G,
-    law: &crate::dynamics::Law,
-    k: &K,
-    ins: &[K::In],
-) -> Vec<K::Out> {
-    crate::kernels::run_chunks::<G, K, L>(g, law, k, ins)
+/// Proof that this CPU has AVX-512 F, DQ, VL and BW: made only by
+/// [`Avx512Cpu::detect`].
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Avx512Cpu(());
+
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+impl Avx512Cpu {
+    /// `Some` if and only if the CPU (and the OS, for the register state)
+    /// supports AVX-512 F, DQ, VL and BW.
+    #[inline]
+    pub(crate) fn detect() -> Option<Avx512Cpu> {
+        (std::arch::is_x86_feature_detected!("avx512f")
+            && std::arch::is_x86_feature_detected!("avx512dq")
+            && std::arch::is_x86_feature_detected!("avx512vl")
+            && std::arch::is_x86_feature_detected!("avx512bw"))
+        .then_some(Avx512Cpu(()))
+    }
 }
 
-/// Run kernel `$k` on `$ins` at level `$isa` with the given lane type per
-/// level (the results do not depend on it; it only sets how many
-/// trajectories share the registers).
-macro_rules! dispatch {
-    ($isa:expr, $g:expr, $law:expr, $k:expr, $ins:expr;
-     avx512 = $l512:ty, avx2 = $l2:ty, sse2 = $lsse:ty, portable = $lp:ty) => {{
-        #[allow(unused_imports)]
-        use crate::lanes::*;
-        match $isa {
-            #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-            crate::isa::Isa::Avx512 => {
-                debug_assert!(crate::isa::Isa::Avx512.is_available());
-                // SAFETY: `on_avx512` is unsafe to call only because it is
-                // compiled for AVX-512. Every `Isa` that reaches a dispatch
-                // came from `Isa::detect` or went through `Isa::checked`
-                // (`LaneBilliard::with_isa`), both of which confirmed with
-                // `is_x86_feature_detected!` that this CPU has avx512f, dq,
-                // vl and bw.
-                unsafe { crate::isa::on_avx512::<_, _, $l512>($g, $law, $k, $ins) }
-            }
-            #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-            crate::isa::Isa::Avx2 => {
-                debug_assert!(crate::isa::Isa::Avx2.is_available());
-                // SAFETY: as above; the CPU was checked for avx2.
-                unsafe { crate::isa::on_avx2::<_, _, $l2>($g, $law, $k, $ins) }
-            }
-            #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-            _ => crate::isa::on_baseline::<_, _, $lsse>($g, $law, $k, $ins),
-            #[cfg(not(any(target_arch = "x86", target_arch = "x86_64")))]
-            _ => crate::isa::on_baseline::<_, _, $lp>($g, $law, $k, $ins),
-        }
-    }};
-}
-pub(crate) use dispatch;
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+impl ProvenBy<Avx512Cpu> for Baseline {}
+// AVX-512F implies AVX2 (a CPU with the former has the latter, and
+// `target_feature(enable = "avx512f")` enables "avx2" too).
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+impl ProvenBy<Avx512Cpu> for Avx2Cpu {}
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+impl ProvenBy<Avx512Cpu> for Avx512Cpu {}
 
 #[cfg(test)]
 mod tests {

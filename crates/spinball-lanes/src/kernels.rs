@@ -8,13 +8,18 @@
 //! dropped. Lanes never interact, so an outcome depends only on its own
 //! initial condition — not on the lane count, the chunking, the thread count
 //! or the instruction set.
+//!
+//! This module knows nothing of instruction sets beyond the lane types each
+//! kernel prefers per level ([`Kernel::Groups`]); choosing the level and
+//! entering the code compiled for it is the `dispatch` module's job, one
+//! layer up.
 
 use spinball_core::{State, TangentVector};
 
 use crate::dynamics::{Balls, Law, LogProduct, Shell, TangentStep, pow2_renormalise, step};
 use crate::geom::Geom;
-use crate::isa::{Isa, dispatch};
-use crate::lanes::{BitsOps, Lanes, MAX_LANES, MaskOps};
+use crate::isa::ProvenBy;
+use crate::lanes::{BitsOps, Groups, Lanes, MAX_LANES, MaskOps, PerIsa};
 use crate::outcome::{Flight, SpectrumStretch, Stretch};
 
 /// A computation over `N` trajectories at once.
@@ -23,6 +28,9 @@ pub(crate) trait Kernel: Sync {
     type In: Copy + Send + Sync;
     /// Per-initial-condition output.
     type Out: Copy + Send;
+    /// The lane type at each instruction-set level (the results do not
+    /// depend on it; it only sets how many trajectories share the registers).
+    type Groups: PerIsa;
     /// Run `L::N` initial conditions (`ins.len() == L::N`), pushing their
     /// outcomes onto `out`.
     fn chunk<G: Geom, L: Lanes>(
@@ -34,14 +42,16 @@ pub(crate) trait Kernel: Sync {
     );
     /// Whether an output is sound (finite throughout).
     fn is_sound(out: &Self::Out) -> bool;
-    /// Run over a slice at instruction-set level `isa` (which the caller has
-    /// checked is available), with this kernel's lane counts.
-    fn dispatch<G: Geom>(&self, isa: Isa, g: &G, law: &Law, ins: &[Self::In]) -> Vec<Self::Out>;
 }
 
 /// Run `k` over `ins` in chunks of `L::N` lanes, results in input order.
+///
+/// The only way the crate runs a kernel. `_cpu` proves that this CPU has the
+/// features `L`'s instructions need (`L::Needs: ProvenBy<C>`, checked by the
+/// compiler): this is what the SIMD lane types' safety rests on.
 #[inline(always)]
-pub(crate) fn run_chunks<G: Geom, K: Kernel, L: Lanes>(
+pub(crate) fn run_chunks<G: Geom, K: Kernel, L: Lanes<Needs: ProvenBy<C>>, C>(
+    _cpu: C,
     g: &G,
     law: &Law,
     k: &K,
@@ -120,6 +130,8 @@ pub(crate) struct Plain {
 impl Kernel for Plain {
     type In = State;
     type Out = Flight;
+    /// Registers per group: AVX-512 4, AVX2 4, SSE2 4, portable `f64` 4.
+    type Groups = Groups<4, 4, 4, 4>;
 
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(&self, g: &G, law: &Law, ins: &[State], out: &mut Vec<Flight>) {
@@ -135,10 +147,6 @@ impl Kernel for Plain {
             time: time.lane(i),
             collisions: self.collisions,
         }));
-    }
-
-    fn dispatch<G: Geom>(&self, isa: Isa, g: &G, law: &Law, ins: &[Self::In]) -> Vec<Self::Out> {
-        dispatch!(isa, g, law, self, ins; avx512 = Wide<Avx512, 4>, avx2 = Wide<Avx2, 4>, sse2 = Wide<Sse2, 4>, portable = Wide<f64, 4>)
     }
 
     fn is_sound(o: &Flight) -> bool {
@@ -159,6 +167,8 @@ pub(crate) struct FiniteDifference {
 impl Kernel for FiniteDifference {
     type In = (State, TangentVector);
     type Out = Stretch;
+    /// Registers per group: AVX-512 3, AVX2 4, SSE2 4, portable `f64` 4.
+    type Groups = Groups<3, 4, 4, 4>;
 
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(
@@ -203,10 +213,6 @@ impl Kernel for FiniteDifference {
         }));
     }
 
-    fn dispatch<G: Geom>(&self, isa: Isa, g: &G, law: &Law, ins: &[Self::In]) -> Vec<Self::Out> {
-        dispatch!(isa, g, law, self, ins; avx512 = Wide<Avx512, 3>, avx2 = Wide<Avx2, 4>, sse2 = Wide<Sse2, 4>, portable = Wide<f64, 4>)
-    }
-
     fn is_sound(o: &Stretch) -> bool {
         o.log_stretch.is_finite()
             && o.time.is_finite()
@@ -230,6 +236,8 @@ pub(crate) struct Tangent {
 impl Kernel for Tangent {
     type In = (State, TangentVector);
     type Out = Stretch;
+    /// Registers per group: AVX-512 3, AVX2 4, SSE2 4, portable `f64` 4.
+    type Groups = Groups<3, 4, 4, 4>;
 
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(
@@ -275,10 +283,6 @@ impl Kernel for Tangent {
         }));
     }
 
-    fn dispatch<G: Geom>(&self, isa: Isa, g: &G, law: &Law, ins: &[Self::In]) -> Vec<Self::Out> {
-        dispatch!(isa, g, law, self, ins; avx512 = Wide<Avx512, 3>, avx2 = Wide<Avx2, 4>, sse2 = Wide<Sse2, 4>, portable = Wide<f64, 4>)
-    }
-
     fn is_sound(o: &Stretch) -> bool {
         <FiniteDifference as Kernel>::is_sound(o)
     }
@@ -296,6 +300,8 @@ pub(crate) struct Spectrum {
 impl Kernel for Spectrum {
     type In = (State, [TangentVector; 5]);
     type Out = SpectrumStretch;
+    /// Registers per group: AVX-512 2, AVX2 3, SSE2 4, portable `f64` 2.
+    type Groups = Groups<2, 3, 4, 2>;
 
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(
@@ -355,10 +361,6 @@ impl Kernel for Spectrum {
         }));
     }
 
-    fn dispatch<G: Geom>(&self, isa: Isa, g: &G, law: &Law, ins: &[Self::In]) -> Vec<Self::Out> {
-        dispatch!(isa, g, law, self, ins; avx512 = Wide<Avx512, 2>, avx2 = Wide<Avx2, 3>, sse2 = Wide<Sse2, 4>, portable = Wide<f64, 2>)
-    }
-
     fn is_sound(o: &SpectrumStretch) -> bool {
         o.log_stretch.iter().all(|x| x.is_finite())
             && o.time.is_finite()
@@ -373,6 +375,7 @@ mod tests {
 
     use super::*;
     use crate::geom::LaneStadium;
+    use crate::isa::Baseline;
     use crate::lanes::Wide;
 
     /// The portable lane type (used off x86) gives the numbers of the
@@ -401,29 +404,29 @@ mod tests {
             .collect();
         let plain = Plain { collisions: 500 };
         assert_eq!(
-            run_chunks::<_, _, Wide<f64, 3>>(&g, &l, &plain, &starts),
-            run_chunks::<_, _, f64>(&g, &l, &plain, &starts)
+            run_chunks::<_, _, Wide<f64, 3>, _>(Baseline, &g, &l, &plain, &starts),
+            run_chunks::<_, _, f64, _>(Baseline, &g, &l, &plain, &starts)
         );
         let fd = FiniteDifference {
             collisions: 500,
             delta0: 1e-7,
         };
         assert_eq!(
-            run_chunks::<_, _, Wide<f64, 4>>(&g, &l, &fd, &ins),
-            run_chunks::<_, _, f64>(&g, &l, &fd, &ins)
+            run_chunks::<_, _, Wide<f64, 4>, _>(Baseline, &g, &l, &fd, &ins),
+            run_chunks::<_, _, f64, _>(Baseline, &g, &l, &fd, &ins)
         );
         let tangent = Tangent { collisions: 500 };
         assert_eq!(
-            run_chunks::<_, _, Wide<f64, 4>>(&g, &l, &tangent, &ins),
-            run_chunks::<_, _, f64>(&g, &l, &tangent, &ins)
+            run_chunks::<_, _, Wide<f64, 4>, _>(Baseline, &g, &l, &tangent, &ins),
+            run_chunks::<_, _, f64, _>(Baseline, &g, &l, &tangent, &ins)
         );
         let spectrum = Spectrum {
             collisions: 500,
             qr_interval: 3,
         };
         assert_eq!(
-            run_chunks::<_, _, Wide<f64, 2>>(&g, &l, &spectrum, &frames),
-            run_chunks::<_, _, f64>(&g, &l, &spectrum, &frames)
+            run_chunks::<_, _, Wide<f64, 2>, _>(Baseline, &g, &l, &spectrum, &frames),
+            run_chunks::<_, _, f64, _>(Baseline, &g, &l, &spectrum, &frames)
         );
     }
 
@@ -467,9 +470,10 @@ mod tests {
             c
         };
         take();
-        run_chunks::<_, _, Counted>(&g, &l, &Plain { collisions: N }, &[s]);
+        run_chunks::<_, _, Counted, _>(Baseline, &g, &l, &Plain { collisions: N }, &[s]);
         let plain = report("plain");
-        run_chunks::<_, _, Counted>(
+        run_chunks::<_, _, Counted, _>(
+            Baseline,
             &g,
             &l,
             &FiniteDifference {
@@ -479,9 +483,10 @@ mod tests {
             &[(s, d)],
         );
         let fd = report("fd");
-        run_chunks::<_, _, Counted>(&g, &l, &Tangent { collisions: N }, &[(s, d)]);
+        run_chunks::<_, _, Counted, _>(Baseline, &g, &l, &Tangent { collisions: N }, &[(s, d)]);
         report("tangent");
-        run_chunks::<_, _, Counted>(
+        run_chunks::<_, _, Counted, _>(
+            Baseline,
             &g,
             &l,
             &Spectrum {

@@ -57,16 +57,29 @@
 //! ```
 //!
 //! # Safety
-//! The only `unsafe` is the call into the functions compiled with
-//! `#[target_feature]` (module [`isa`]), made after `is_x86_feature_detected!`
-//! confirmed the features; the tests run every kernel on every level the CPU
-//! has and check it against the scalar path.
+//! The `unsafe` code is of two kinds, each block with a `// SAFETY:` comment:
+//! the calls of the SIMD intrinsics inside the SSE2, AVX2 and AVX-512 lane
+//! types, and one call per level into the copy of the kernels compiled with
+//! `#[target_feature]` for it. Both rest on the CPU having the features, and
+//! the crate holds that fact as a value the compiler tracks: zero-sized
+//! proofs made only by `is_x86_feature_detected!` (see [`isa`]), which the
+//! entry points take and which must prove what the lane type a kernel runs
+//! with needs.
+//! SSE2 is used only where the target itself guarantees it (a 32-bit x86
+//! target without SSE2 runs portable `f64` lanes at the baseline). The tests
+//! run every kernel on every level the CPU has and check it against the
+//! scalar path.
 //!
 //! # Features
 //! - `serde`: `Serialize`/`Deserialize` for the outcomes.
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
+// The modules form layers, each using only layers below it:
+// `isa` (levels, proofs of CPU features) < `error`, `lanes` (lane types) <
+// `geom` < `dynamics` < `kernels` (what to run; `outcome` is what they
+// return) < `dispatch` (which copy to run) < `billiard` (the public API).
 mod billiard;
+mod dispatch;
 mod dynamics;
 mod error;
 mod geom;
@@ -77,5 +90,5 @@ mod outcome;
 
 pub use billiard::{CHUNK, LaneBilliard, MAX_QR_INTERVAL, has_lane_form};
 pub use error::LanesError;
-pub use isa::Isa;
+pub use isa::{Isa, IsaError};
 pub use outcome::{Flight, SpectrumStretch, Stretch};

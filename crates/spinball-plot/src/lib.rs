@@ -49,6 +49,7 @@
 //! Text is rendered with DejaVu Sans, bundled through the `dejavu` crate and
 //! registered with plotters' pure-Rust `ab_glyph` renderer (see [`font`]); no
 //! fontconfig, freetype or other system library is needed.
+#![forbid(unsafe_code)]
 
 mod colormap;
 mod error;

@@ -1,0 +1,206 @@
+//! Four `f64` lanes in an AVX2 register: x86-64 since Haswell and Zen 1.
+//!
+//! The intrinsics are only sound on a CPU with AVX2, which is known at run
+//! time only. [`Avx2`]'s `Lanes::Needs` is the proof [`Avx2Cpu`]: the
+//! kernels run with it only given an `Avx2Cpu` (or an `Avx512Cpu`), made by
+//! detecting the features, and only inside the entry points compiled with
+//! AVX2 (or AVX-512) enabled.
+
+#[cfg(target_arch = "x86")]
+use std::arch::x86::*;
+#[cfg(target_arch = "x86_64")]
+use std::arch::x86_64::*;
+
+use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS};
+use crate::isa::Avx2Cpu;
+
+/// Four lanes in an AVX2 register.
+///
+/// # Invariant
+/// Code that makes or uses an `Avx2` (or its [`Avx2Mask`], [`Avx2Bits`])
+/// runs only on a CPU with AVX2. The kernels run on lanes only through
+/// `kernels::run_chunks`, which takes a proof `C` with `Needs:
+/// ProvenBy<C>` (checked by the compiler; here `Needs` is [`Avx2Cpu`], made
+/// only by detection), and nothing else in the crate makes these values.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Avx2(__m256d);
+/// A mask of [`Avx2`] lanes (all ones or all zeros per lane).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Avx2Mask(__m256d);
+/// `u64` lanes of [`Avx2`].
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Avx2Bits(__m256i);
+
+ops!(Avx2, avx2_splat, |a, b|
+    // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+    // AVX2 was detected (the type's invariant).
+    add: Avx2(unsafe { _mm256_add_pd(a.0, b.0) }),
+    // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+    // AVX2 was detected (the type's invariant).
+    sub: Avx2(unsafe { _mm256_sub_pd(a.0, b.0) }),
+    // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+    // AVX2 was detected (the type's invariant).
+    mul: Avx2(unsafe { _mm256_mul_pd(a.0, b.0) }),
+    // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+    // AVX2 was detected (the type's invariant).
+    div: Avx2(unsafe { _mm256_div_pd(a.0, b.0) }),
+    // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+    // AVX2 was detected (the type's invariant).
+    neg: Avx2(unsafe { _mm256_xor_pd(a.0, _mm256_set1_pd(-0.0)) }));
+
+#[inline(always)]
+fn avx2_splat(x: f64) -> Avx2 {
+    // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+    // AVX2 was detected (the type's invariant).
+    Avx2(unsafe { _mm256_set1_pd(x) })
+}
+
+impl MaskOps for Avx2Mask {
+    #[inline(always)]
+    fn and(self, o: Self) -> Self {
+        // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+        // AVX2 was detected (the type's invariant).
+        Avx2Mask(unsafe { _mm256_and_pd(self.0, o.0) })
+    }
+    #[inline(always)]
+    fn or(self, o: Self) -> Self {
+        // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+        // AVX2 was detected (the type's invariant).
+        Avx2Mask(unsafe { _mm256_or_pd(self.0, o.0) })
+    }
+    #[inline(always)]
+    fn not(self) -> Self {
+        // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+        // AVX2 was detected (the type's invariant).
+        Avx2Mask(unsafe { _mm256_xor_pd(self.0, _mm256_castsi256_pd(_mm256_set1_epi64x(-1))) })
+    }
+    #[inline(always)]
+    fn any(self) -> bool {
+        // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+        // AVX2 was detected (the type's invariant).
+        unsafe { _mm256_movemask_pd(self.0) != 0 }
+    }
+}
+
+impl BitsOps for Avx2Bits {
+    const W: usize = 4;
+    #[inline(always)]
+    fn splat(x: u64) -> Self {
+        // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+        // AVX2 was detected (the type's invariant).
+        Avx2Bits(unsafe { _mm256_set1_epi64x(x as i64) })
+    }
+    #[inline(always)]
+    fn add(self, o: Self) -> Self {
+        // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+        // AVX2 was detected (the type's invariant).
+        Avx2Bits(unsafe { _mm256_add_epi64(self.0, o.0) })
+    }
+    #[inline(always)]
+    fn sub(self, o: Self) -> Self {
+        // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+        // AVX2 was detected (the type's invariant).
+        Avx2Bits(unsafe { _mm256_sub_epi64(self.0, o.0) })
+    }
+    fn lane(self, i: usize) -> u64 {
+        let mut buf = [0u64; 4];
+        // SAFETY: AVX (the type's invariant); `buf` is 4 `u64`s, 32 bytes, so the
+        // unaligned store writes only to it.
+        unsafe { _mm256_storeu_si256(buf.as_mut_ptr().cast(), self.0) };
+        buf[i]
+    }
+}
+
+macro_rules! avx_cmp {
+    ($($f:ident = $p:ident),*) => {$(
+        #[inline(always)]
+        fn $f(self, o: Self) -> Avx2Mask {
+            // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+            // AVX2 was detected (the type's invariant).
+            Avx2Mask(unsafe { _mm256_cmp_pd::<$p>(self.0, o.0) })
+        }
+    )*};
+}
+
+impl Lanes for Avx2 {
+    const N: usize = 4;
+    type Mask = Avx2Mask;
+    type Bits = Avx2Bits;
+    type Needs = Avx2Cpu;
+    #[inline(always)]
+    fn splat(x: f64) -> Self {
+        avx2_splat(x)
+    }
+    #[inline(always)]
+    fn load(s: &[f64]) -> Self {
+        let s = &s[..4];
+        // SAFETY: AVX (the type's invariant); `s` was cut to 4 elements, so the
+        // unaligned 32-byte load reads only from it.
+        Avx2(unsafe { _mm256_loadu_pd(s.as_ptr()) })
+    }
+    #[inline(always)]
+    fn store(self, s: &mut [f64]) {
+        let s = &mut s[..4];
+        // SAFETY: AVX (the type's invariant); `s` was cut to 4 elements, so the
+        // unaligned 32-byte store writes only to it.
+        unsafe { _mm256_storeu_pd(s.as_mut_ptr(), self.0) }
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+        // AVX2 was detected (the type's invariant).
+        Avx2(unsafe { _mm256_sqrt_pd(self.0) })
+    }
+    #[inline(always)]
+    fn abs(self) -> Self {
+        // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+        // AVX2 was detected (the type's invariant).
+        Avx2(unsafe { _mm256_andnot_pd(_mm256_set1_pd(-0.0), self.0) })
+    }
+    #[inline(always)]
+    fn max(self, o: Self) -> Self {
+        // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+        // AVX2 was detected (the type's invariant).
+        Avx2(unsafe { _mm256_max_pd(self.0, o.0) })
+    }
+    avx_cmp!(
+        lt = _CMP_LT_OQ,
+        le = _CMP_LE_OQ,
+        gt = _CMP_GT_OQ,
+        ge = _CMP_GE_OQ,
+        eq = _CMP_EQ_OQ,
+        ne = _CMP_NEQ_UQ
+    );
+    #[inline(always)]
+    fn select(m: Avx2Mask, a: Self, b: Self) -> Self {
+        // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+        // AVX2 was detected (the type's invariant).
+        Avx2(unsafe { _mm256_blendv_pd(b.0, a.0, m.0) })
+    }
+    #[inline(always)]
+    fn exponent(self) -> Avx2Bits {
+        // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+        // AVX2 was detected (the type's invariant).
+        Avx2Bits(unsafe { _mm256_srli_epi64::<{ EXP_SHIFT as i32 }>(_mm256_castpd_si256(self.0)) })
+    }
+    #[inline(always)]
+    fn mantissa(self) -> Self {
+        // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+        // AVX2 was detected (the type's invariant).
+        Avx2(unsafe {
+            _mm256_castsi256_pd(_mm256_or_si256(
+                _mm256_and_si256(
+                    _mm256_castpd_si256(self.0),
+                    _mm256_set1_epi64x(MANTISSA as i64),
+                ),
+                _mm256_set1_epi64x(ONE_BITS as i64),
+            ))
+        })
+    }
+    #[inline(always)]
+    fn pow2(e: Avx2Bits) -> Self {
+        // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
+        // AVX2 was detected (the type's invariant).
+        Avx2(unsafe { _mm256_castsi256_pd(_mm256_slli_epi64::<{ EXP_SHIFT as i32 }>(e.0)) })
+    }
+}

@@ -1,0 +1,303 @@
+//! The lane types: the physics is written once, over [`Lanes`], and runs on
+//! one `f64`, on SSE2, AVX2 or AVX-512 registers, or on several registers at
+//! once.
+//!
+//! A kernel step is a long chain of dependent operations (two divisions and
+//! two square roots deep). Running `N` independent trajectories in the lanes
+//! of vector registers, and several registers side by side ([`Wide`]), lets
+//! the CPU overlap those chains. Each implementation maps one operation to
+//! one instruction (`vdivpd`, `vcmppd` + `vblendvpd`, ...) of its level, so
+//! the generated code does not depend on the auto-vectoriser.
+//!
+//! **Same numbers everywhere.** Every operation is the IEEE operation the
+//! scalar code performs on each lane (no fused multiply-add, no approximate
+//! reciprocal or square root); comparisons use the predicates of Rust's `<`,
+//! `<=`, `==`, `!=` (ordered, except `!=`); [`Lanes::max`] and
+//! [`Lanes::clamp`] have the NaN behaviour of `f64::max` (for a non-NaN
+//! second argument) and `f64::clamp`. So a lane computes what the scalar code
+//! computes, bitwise (up to the sign of a zero out of `max`, which Rust
+//! leaves unspecified), on every level.
+//!
+//! This file holds the traits; each family of lane types has its own file:
+//! [`portable`] (`f64` and [`Wide`]), `sse2`, `avx2`, `avx512` (x86 only) and
+//! `counted` (tests). [`PerIsa`] names the lane type a kernel runs with at
+//! each instruction-set level.
+//!
+//! **Safety.** The SSE2, AVX2 and AVX-512 types call intrinsics, which is
+//! undefined behaviour on a CPU without the feature. Each type names the
+//! proof of the feature it needs ([`Lanes::Needs`], one of the zero-sized
+//! proofs of [`isa`](crate::isa)). The one function that runs kernels,
+//! [`run_chunks`](crate::kernels::run_chunks), takes a proof and requires
+//! that it proves the lane type's needs ([`ProvenBy`]), so the compiler
+//! checks that every kernel run uses lanes the detected level allows (for
+//! SSE2: lanes the target itself guarantees). That no other code makes SIMD
+//! lane values is the invariant stated on each type.
+
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+use crate::isa::{Avx2Cpu, Avx512Cpu};
+use crate::isa::{Baseline, ProvenBy};
+
+/// Most lanes any [`Lanes`] type has (bounds the stack buffers of the kernels).
+pub(crate) const MAX_LANES: usize = 64;
+
+/// Lane-wise boolean operations of a comparison result.
+pub(crate) trait MaskOps: Copy {
+    /// Both.
+    fn and(self, o: Self) -> Self;
+    /// Either.
+    fn or(self, o: Self) -> Self;
+    /// Negation.
+    fn not(self) -> Self;
+    /// Whether any lane is set.
+    fn any(self) -> bool;
+}
+
+/// Lane-wise `u64` arithmetic (exponent bookkeeping).
+pub(crate) trait BitsOps: Copy {
+    /// Number of lanes.
+    const W: usize;
+    /// Every lane `x`.
+    fn splat(x: u64) -> Self;
+    /// Wrapping addition.
+    fn add(self, o: Self) -> Self;
+    /// Wrapping subtraction.
+    fn sub(self, o: Self) -> Self;
+    /// Lane `i` (outside hot loops).
+    fn lane(self, i: usize) -> u64;
+}
+
+/// `N` independent `f64`s and the operations the physics needs.
+pub(crate) trait Lanes:
+    Copy
+    + Send
+    + Sync
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + Add<f64, Output = Self>
+    + Sub<f64, Output = Self>
+    + Mul<f64, Output = Self>
+    + Div<f64, Output = Self>
+{
+    /// Number of lanes.
+    const N: usize;
+    /// A comparison result.
+    type Mask: MaskOps;
+    /// `u64` lanes.
+    type Bits: BitsOps;
+    /// The proof (a zero-sized type of [`isa`](crate::isa)) that the CPU can
+    /// run this type's instructions: [`Baseline`](crate::isa::Baseline) for
+    /// `f64` and SSE2, [`Avx2Cpu`] and [`Avx512Cpu`] for the x86 vector
+    /// types. Kernels run only with a proof `C` such that
+    /// `Needs: `[`ProvenBy`]`<C>`.
+    type Needs;
+
+    /// Every lane `x`.
+    fn splat(x: f64) -> Self;
+    /// Lanes from the first `N` elements of `s`.
+    fn load(s: &[f64]) -> Self;
+    /// Lanes into the first `N` elements of `s`.
+    fn store(self, s: &mut [f64]);
+    /// Correctly rounded square root.
+    fn sqrt(self) -> Self;
+    /// Absolute value.
+    fn abs(self) -> Self;
+    /// `f64::max` (for `o` not NaN: a NaN `self` gives `o`).
+    fn max(self, o: Self) -> Self;
+    /// `self < o`.
+    fn lt(self, o: Self) -> Self::Mask;
+    /// `self <= o`.
+    fn le(self, o: Self) -> Self::Mask;
+    /// `self > o`.
+    fn gt(self, o: Self) -> Self::Mask;
+    /// `self >= o`.
+    fn ge(self, o: Self) -> Self::Mask;
+    /// `self == o`.
+    fn eq(self, o: Self) -> Self::Mask;
+    /// `self != o` (true for NaN).
+    fn ne(self, o: Self) -> Self::Mask;
+    /// `a` where `m`, `b` elsewhere.
+    fn select(m: Self::Mask, a: Self, b: Self) -> Self;
+    /// The biased exponent field, `bits >> 52` (for `self >= 0`).
+    fn exponent(self) -> Self::Bits;
+    /// `self` with its exponent replaced by 1.0's: the mantissa in `[1, 2)`
+    /// (for `self > 0` and normal).
+    fn mantissa(self) -> Self;
+    /// The `f64` whose bits are `e << 52`: `2^(e − 1023)` for `e` in `1..2047`.
+    fn pow2(e: Self::Bits) -> Self;
+
+    /// Lanes that are neither NaN nor infinite.
+    #[inline(always)]
+    fn is_finite(self) -> Self::Mask {
+        self.abs().lt(Self::splat(f64::INFINITY))
+    }
+    /// `f64::clamp`: NaN passes through.
+    #[inline(always)]
+    fn clamp(self, lo: f64, hi: f64) -> Self {
+        let x = Self::select(self.lt(Self::splat(lo)), Self::splat(lo), self);
+        Self::select(x.gt(Self::splat(hi)), Self::splat(hi), x)
+    }
+    /// Lane `i` (outside hot loops).
+    #[inline(always)]
+    fn lane(self, i: usize) -> f64 {
+        let mut buf = [0.0; MAX_LANES];
+        self.store(&mut buf);
+        buf[i]
+    }
+}
+
+const EXP_SHIFT: u32 = 52;
+const MANTISSA: u64 = 0x000f_ffff_ffff_ffff;
+const ONE_BITS: u64 = 0x3ff0_0000_0000_0000;
+
+/// Operators of a lane type from its binary-operation closure (for the x86
+/// types; defined here, before their modules, so that they see it).
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+macro_rules! ops {
+    ($t:ty, $splat:path, |$a:ident, $b:ident| add: $add:expr, sub: $sub:expr, mul: $mul:expr, div: $div:expr, neg: $neg:expr) => {
+        impl ::std::ops::Add for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn add(self, o: $t) -> $t {
+                let ($a, $b) = (self, o);
+                $add
+            }
+        }
+        impl ::std::ops::Sub for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn sub(self, o: $t) -> $t {
+                let ($a, $b) = (self, o);
+                $sub
+            }
+        }
+        impl ::std::ops::Mul for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn mul(self, o: $t) -> $t {
+                let ($a, $b) = (self, o);
+                $mul
+            }
+        }
+        impl ::std::ops::Div for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn div(self, o: $t) -> $t {
+                let ($a, $b) = (self, o);
+                $div
+            }
+        }
+        impl ::std::ops::Neg for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn neg(self) -> $t {
+                let $a = self;
+                $neg
+            }
+        }
+        impl ::std::ops::Add<f64> for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn add(self, o: f64) -> $t {
+                self + $splat(o)
+            }
+        }
+        impl ::std::ops::Sub<f64> for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn sub(self, o: f64) -> $t {
+                self - $splat(o)
+            }
+        }
+        impl ::std::ops::Mul<f64> for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn mul(self, o: f64) -> $t {
+                self * $splat(o)
+            }
+        }
+        impl ::std::ops::Div<f64> for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn div(self, o: f64) -> $t {
+                self / $splat(o)
+            }
+        }
+    };
+}
+
+mod portable;
+pub(crate) use portable::Wide;
+
+#[cfg(all(
+    any(target_arch = "x86", target_arch = "x86_64"),
+    target_feature = "sse2"
+))]
+mod sse2;
+#[cfg(all(
+    any(target_arch = "x86", target_arch = "x86_64"),
+    target_feature = "sse2"
+))]
+pub(crate) use sse2::Sse2;
+
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+mod avx2;
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+pub(crate) use avx2::Avx2;
+
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+mod avx512;
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+pub(crate) use avx512::Avx512;
+
+#[cfg(test)]
+pub(crate) mod counted;
+
+/// The lane type a kernel runs with at each instruction-set level.
+///
+/// The results do not depend on it: it only sets how many trajectories share
+/// the registers, which is a matter of each kernel's register pressure.
+pub(crate) trait PerIsa {
+    /// At [`Isa::Avx512`](crate::Isa::Avx512).
+    #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+    type Avx512: Lanes<Needs: ProvenBy<Avx512Cpu>>;
+    /// At [`Isa::Avx2`](crate::Isa::Avx2).
+    #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+    type Avx2: Lanes<Needs: ProvenBy<Avx2Cpu>>;
+    /// At [`Isa::Baseline`](crate::Isa::Baseline).
+    type Baseline: Lanes<Needs: ProvenBy<Baseline>>;
+}
+
+/// [`Wide`] groups of `AVX512` AVX-512 registers, `AVX2` AVX2 registers,
+/// `SSE2` SSE2 registers and (where the baseline has no SSE2) `PORTABLE`
+/// `f64`s.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Groups<
+    const AVX512: usize,
+    const AVX2: usize,
+    const SSE2: usize,
+    const PORTABLE: usize,
+>;
+
+impl<const AVX512: usize, const AVX2: usize, const SSE2: usize, const PORTABLE: usize> PerIsa
+    for Groups<AVX512, AVX2, SSE2, PORTABLE>
+{
+    #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+    type Avx512 = Wide<Avx512, AVX512>;
+    #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+    type Avx2 = Wide<Avx2, AVX2>;
+    #[cfg(all(
+        any(target_arch = "x86", target_arch = "x86_64"),
+        target_feature = "sse2"
+    ))]
+    type Baseline = Wide<Sse2, SSE2>;
+    #[cfg(not(all(
+        any(target_arch = "x86", target_arch = "x86_64"),
+        target_feature = "sse2"
+    )))]
+    type Baseline = Wide<f64, PORTABLE>;
+}

@@ -1,0 +1,279 @@
+//! The lane types without intrinsics: one plain `f64` lane, and [`Wide`],
+//! several registers of any lane type side by side.
+//!
+//! `f64` is the reference every other type must match bitwise, the lane type
+//! of the baseline where the target has no SSE2, and the base of the
+//! operation-counting type of the tests. [`Wide`] turns one register into a
+//! group: `K` independent dependency chains the CPU overlaps, at every level.
+//! Nothing here is `unsafe`.
+
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS};
+use crate::isa::Baseline;
+
+impl MaskOps for bool {
+    #[inline(always)]
+    fn and(self, o: bool) -> bool {
+        self & o
+    }
+    #[inline(always)]
+    fn or(self, o: bool) -> bool {
+        self | o
+    }
+    #[inline(always)]
+    fn not(self) -> bool {
+        !self
+    }
+    #[inline(always)]
+    fn any(self) -> bool {
+        self
+    }
+}
+
+impl BitsOps for u64 {
+    const W: usize = 1;
+    #[inline(always)]
+    fn splat(x: u64) -> u64 {
+        x
+    }
+    #[inline(always)]
+    fn add(self, o: u64) -> u64 {
+        self.wrapping_add(o)
+    }
+    #[inline(always)]
+    fn sub(self, o: u64) -> u64 {
+        self.wrapping_sub(o)
+    }
+    #[inline(always)]
+    fn lane(self, _: usize) -> u64 {
+        self
+    }
+}
+
+/// One lane: plain `f64` (the portable fallback and the reference).
+impl Lanes for f64 {
+    const N: usize = 1;
+    type Mask = bool;
+    type Bits = u64;
+    type Needs = Baseline;
+    #[inline(always)]
+    fn splat(x: f64) -> f64 {
+        x
+    }
+    #[inline(always)]
+    fn load(s: &[f64]) -> f64 {
+        s[0]
+    }
+    #[inline(always)]
+    fn store(self, s: &mut [f64]) {
+        s[0] = self;
+    }
+    #[inline(always)]
+    fn sqrt(self) -> f64 {
+        f64::sqrt(self)
+    }
+    #[inline(always)]
+    fn abs(self) -> f64 {
+        f64::abs(self)
+    }
+    #[inline(always)]
+    fn max(self, o: f64) -> f64 {
+        f64::max(self, o)
+    }
+    #[inline(always)]
+    fn lt(self, o: f64) -> bool {
+        self < o
+    }
+    #[inline(always)]
+    fn le(self, o: f64) -> bool {
+        self <= o
+    }
+    #[inline(always)]
+    fn gt(self, o: f64) -> bool {
+        self > o
+    }
+    #[inline(always)]
+    fn ge(self, o: f64) -> bool {
+        self >= o
+    }
+    #[inline(always)]
+    fn eq(self, o: f64) -> bool {
+        self == o
+    }
+    #[inline(always)]
+    fn ne(self, o: f64) -> bool {
+        self != o
+    }
+    #[inline(always)]
+    fn select(m: bool, a: f64, b: f64) -> f64 {
+        if m { a } else { b }
+    }
+    #[inline(always)]
+    fn exponent(self) -> u64 {
+        self.to_bits() >> EXP_SHIFT
+    }
+    #[inline(always)]
+    fn mantissa(self) -> f64 {
+        f64::from_bits((self.to_bits() & MANTISSA) | ONE_BITS)
+    }
+    #[inline(always)]
+    fn pow2(e: u64) -> f64 {
+        f64::from_bits(e << EXP_SHIFT)
+    }
+}
+
+/// `K` registers of `L` side by side: `K · L::N` lanes whose dependency
+/// chains the CPU overlaps.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Wide<L, const K: usize>(pub [L; K]);
+
+/// Build `[T; K]` element by element (`T: Copy`). A plain loop rather than
+/// `std::array::from_fn`, whose helpers are not always inlined into the
+/// `#[target_feature]` functions (a call per operation, out of the vector
+/// context).
+macro_rules! each {
+    ($k:expr, |$i:ident| $e:expr) => {{
+        let mut out = [{
+            let $i = 0;
+            $e
+        }; $k];
+        let mut $i = 1;
+        while $i < $k {
+            out[$i] = $e;
+            $i += 1;
+        }
+        out
+    }};
+}
+
+impl<M: MaskOps, const K: usize> MaskOps for Wide<M, K> {
+    #[inline(always)]
+    fn and(self, o: Self) -> Self {
+        Wide(each!(K, |i| self.0[i].and(o.0[i])))
+    }
+    #[inline(always)]
+    fn or(self, o: Self) -> Self {
+        Wide(each!(K, |i| self.0[i].or(o.0[i])))
+    }
+    #[inline(always)]
+    fn not(self) -> Self {
+        Wide(each!(K, |i| self.0[i].not()))
+    }
+    #[inline(always)]
+    fn any(self) -> bool {
+        self.0.iter().any(|m| m.any())
+    }
+}
+
+macro_rules! wide_binop {
+    ($tr:ident, $f:ident) => {
+        impl<L: Lanes, const K: usize> $tr for Wide<L, K> {
+            type Output = Self;
+            #[inline(always)]
+            fn $f(self, o: Self) -> Self {
+                Wide(each!(K, |i| $tr::$f(self.0[i], o.0[i])))
+            }
+        }
+        impl<L: Lanes, const K: usize> $tr<f64> for Wide<L, K> {
+            type Output = Self;
+            #[inline(always)]
+            fn $f(self, o: f64) -> Self {
+                let o = L::splat(o);
+                Wide(each!(K, |i| $tr::$f(self.0[i], o)))
+            }
+        }
+    };
+}
+wide_binop!(Add, add);
+wide_binop!(Sub, sub);
+wide_binop!(Mul, mul);
+wide_binop!(Div, div);
+
+impl<L: Lanes, const K: usize> Neg for Wide<L, K> {
+    type Output = Self;
+    #[inline(always)]
+    fn neg(self) -> Self {
+        Wide(each!(K, |i| -self.0[i]))
+    }
+}
+
+macro_rules! wide_cmp {
+    ($($f:ident),*) => {$(
+        #[inline(always)]
+        fn $f(self, o: Self) -> Self::Mask {
+            Wide(each!(K, |i| self.0[i].$f(o.0[i])))
+        }
+    )*};
+}
+
+impl<L: Lanes, const K: usize> Lanes for Wide<L, K> {
+    const N: usize = L::N * K;
+    type Mask = Wide<L::Mask, K>;
+    type Bits = Wide<L::Bits, K>;
+    type Needs = L::Needs;
+
+    #[inline(always)]
+    fn splat(x: f64) -> Self {
+        Wide([L::splat(x); K])
+    }
+    #[inline(always)]
+    fn load(s: &[f64]) -> Self {
+        Wide(each!(K, |i| L::load(&s[i * L::N..])))
+    }
+    #[inline(always)]
+    fn store(self, s: &mut [f64]) {
+        for (i, x) in self.0.into_iter().enumerate() {
+            x.store(&mut s[i * L::N..]);
+        }
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        Wide(each!(K, |i| self.0[i].sqrt()))
+    }
+    #[inline(always)]
+    fn abs(self) -> Self {
+        Wide(each!(K, |i| self.0[i].abs()))
+    }
+    #[inline(always)]
+    fn max(self, o: Self) -> Self {
+        Wide(each!(K, |i| self.0[i].max(o.0[i])))
+    }
+    wide_cmp!(lt, le, gt, ge, eq, ne);
+    #[inline(always)]
+    fn select(m: Self::Mask, a: Self, b: Self) -> Self {
+        Wide(each!(K, |i| L::select(m.0[i], a.0[i], b.0[i])))
+    }
+    #[inline(always)]
+    fn exponent(self) -> Self::Bits {
+        Wide(each!(K, |i| self.0[i].exponent()))
+    }
+    #[inline(always)]
+    fn mantissa(self) -> Self {
+        Wide(each!(K, |i| self.0[i].mantissa()))
+    }
+    #[inline(always)]
+    fn pow2(e: Self::Bits) -> Self {
+        Wide(each!(K, |i| L::pow2(e.0[i])))
+    }
+}
+
+/// `u64` lanes of a [`Wide`] (lane `i` lives in register `i / L::N`).
+impl<B: BitsOps, const K: usize> BitsOps for Wide<B, K> {
+    #[inline(always)]
+    fn splat(x: u64) -> Self {
+        Wide([B::splat(x); K])
+    }
+    #[inline(always)]
+    fn add(self, o: Self) -> Self {
+        Wide(each!(K, |i| self.0[i].add(o.0[i])))
+    }
+    #[inline(always)]
+    fn sub(self, o: Self) -> Self {
+        Wide(each!(K, |i| self.0[i].sub(o.0[i])))
+    }
+    const W: usize = B::W * K;
+    fn lane(self, i: usize) -> u64 {
+        self.0[i / B::W].lane(i % B::W)
+    }
+}
