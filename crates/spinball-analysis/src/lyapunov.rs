@@ -19,6 +19,10 @@ use spinball_geometry::Boundary;
 
 use crate::error::AnalysisError;
 
+/// The initial direction of the shadow or tangent vector (it lives in
+/// `spinball-core`, shared with the lane kernels).
+pub use spinball_core::random_direction;
+
 /// How the exponent is measured.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -155,17 +159,6 @@ pub struct Lyapunov {
     pub collisions: u64,
     /// Running exponent, if asked for.
     pub history: Vec<HistoryPoint>,
-}
-
-/// A uniformly random unit vector in 5-D.
-pub fn random_direction<R: Rng + ?Sized>(rng: &mut R) -> TangentVector {
-    loop {
-        let z: [f64; 5] = std::array::from_fn(|_| 2.0 * rng.random::<f64>() - 1.0);
-        let n2: f64 = z.iter().map(|x| x * x).sum();
-        if n2 > 1e-4 && n2 <= 1.0 {
-            return TangentVector::from_array(z) * (1.0 / n2.sqrt());
-        }
-    }
 }
 
 /// Running sum of logarithms, taking `ln` only when the product of growth

@@ -36,6 +36,7 @@
 
 pub mod billiard;
 pub mod collision;
+pub mod direction;
 pub mod error;
 pub mod observer;
 pub mod sampler;
@@ -45,12 +46,13 @@ pub mod tangent;
 
 pub use billiard::{Billiard, Run};
 pub use collision::Collision;
+pub use direction::random_direction;
 pub use error::{LaunchError, SpinLawError, StepError};
 pub use observer::{EnergyMonitor, Observer, Recorder};
 pub use sampler::{PAPER_SHRINK, PAPER_SPIN_FRACTION, Sampler, UnknownSampler, ic_rng};
 pub use spin_law::SpinLaw;
 pub use state::{Ball, State};
-pub use tangent::{Jacobian, TangentFrame, TangentVector, tangent_collision};
+pub use tangent::{Jacobian, MAX_QR_INTERVAL, TangentFrame, TangentVector, tangent_collision};
 
 pub use rand_pcg::Pcg64;
 pub use spinball_geometry::{Boundary, Hit};

@@ -12,8 +12,7 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use spinball_analysis::random_direction;
-use spinball_core::{Sampler, SpinLaw, State, TangentVector, ic_rng};
+use spinball_core::{Sampler, SpinLaw, State, TangentVector, ic_rng, random_direction};
 use spinball_geometry::{Circle, Rectangle, Sinai, Stadium, Table};
 use spinball_lanes::{Isa, LaneBilliard};
 

@@ -17,8 +17,7 @@
 
 use std::time::Instant;
 
-use spinball_analysis::random_direction;
-use spinball_core::{Sampler, SpinLaw, State, TangentVector, ic_rng};
+use spinball_core::{Sampler, SpinLaw, State, TangentVector, ic_rng, random_direction};
 use spinball_geometry::Table;
 use spinball_lanes::{Isa, LaneBilliard};
 
@@ -184,59 +183,141 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     Ok(())
 }
 
-/// The scalar path (`spinball-core`, `spinball-analysis`) on one thread,
-/// over a tenth of the initial conditions: the specification the lanes are
-/// tested against, and the speed they replace.
+/// The scalar path on one thread, over a tenth of the initial conditions:
+/// the specification the lanes are tested against, and the speed they
+/// replace. `Billiard::step` for the plain map; the finite-difference,
+/// tangent and spectrum loops are those of `spinball-analysis`'s
+/// `largest_lyapunov` and `lyapunov_spectrum`, written out here with
+/// `spinball-core` (this crate sits below `spinball-analysis`).
 fn scalar(
     a: &Args,
     law: &SpinLaw,
     starts: &[State],
-    _dirs: &[TangentVector],
+    dirs: &[TangentVector],
 ) -> Result<(), Box<dyn std::error::Error>> {
-    use spinball_analysis::{
-        LyapunovOptions, Method, SpectrumOptions, largest_lyapunov, lyapunov_spectrum,
-    };
-    use spinball_core::Billiard;
+    use spinball_core::{Ball, Billiard};
     let Table::Stadium(stadium) = a.table else {
         return Err("--scalar is implemented for the stadium".into());
     };
     let billiard = Billiard::new(stadium, *law);
     let n = (starts.len() / 10).max(1);
     let steps = n as f64 * a.collisions as f64;
-    let report = |name: &str, (t0, c0): (Instant, Option<f64>)| {
+    let report = |name: &str, (t0, c0): (Instant, Option<f64>), check: f64| {
         let cpu = match (c0, cpu_seconds()) {
             (Some(c0), Some(c1)) => (c1 - c0) / steps * 1e9,
             _ => f64::NAN,
         };
         println!(
-            "scalar    {name:<9} wall {:8.3} ns/IC-step  cpu {cpu:8.3} ns/IC-step  (1 thread)",
+            "scalar    {name:<9} wall {:8.3} ns/IC-step  cpu {cpu:8.3} ns/IC-step  (1 thread)  (check {check:.6})",
             t0.elapsed().as_secs_f64() / steps * 1e9
         );
     };
     let start = || (Instant::now(), cpu_seconds());
+
     let t0 = start();
+    let mut time = 0.0;
     for s in starts.iter().take(n) {
         let mut ball = billiard.launch(*s)?;
         for _ in 0..a.collisions {
-            billiard.step(&mut ball)?;
+            time += billiard.step(&mut ball)?.time();
         }
     }
-    report("plain", t0);
-    for method in [Method::default(), Method::Tangent] {
-        let t0 = start();
-        for s in starts.iter().take(n) {
-            let mut rng = ic_rng(1, 0);
-            let opts = LyapunovOptions::new(a.collisions, method);
-            largest_lyapunov(&billiard, *s, &opts, &mut rng)?;
-        }
-        report(method.name(), t0);
-    }
+    report("plain", t0, time);
+
     let t0 = start();
-    for s in starts.iter().take(n) {
-        let mut rng = ic_rng(1, 0);
-        let opts = SpectrumOptions::new(a.collisions, Method::Tangent);
-        lyapunov_spectrum(&billiard, *s, &opts, &mut rng)?;
+    let mut sum = 0.0;
+    for (s, dir) in starts.iter().zip(dirs).take(n) {
+        const DELTA0: f64 = 1e-7;
+        let offset = |z: &State, d: TangentVector| {
+            let (z, d) = (z.to_array(), d.to_array());
+            State::from_array(std::array::from_fn(|i| z[i] + d[i]))
+        };
+        let mut ball = billiard.launch(*s)?;
+        let mut shadow = Ball::new(offset(s, *dir * DELTA0), law)?;
+        let (mut logs, mut time) = (LogSum::default(), 0.0);
+        for _ in 0..a.collisions {
+            time += billiard.step(&mut ball)?.time();
+            billiard.step(&mut shadow)?;
+            let (p, q) = (ball.state().to_array(), shadow.state().to_array());
+            let d = TangentVector::from_array(std::array::from_fn(|i| q[i] - p[i]));
+            let dist = d.norm();
+            logs.push(dist / DELTA0);
+            shadow = Ball::new(offset(ball.state(), d * (DELTA0 / dist)), law)?;
+        }
+        sum += logs.total() / time;
     }
-    report("spectrum", t0);
+    report("fd", t0, sum / n as f64);
+
+    let t0 = start();
+    let mut sum = 0.0;
+    for (s, dir) in starts.iter().zip(dirs).take(n) {
+        let mut ball = billiard.launch(*s)?;
+        let mut v = [*dir];
+        let (mut logs, mut time) = (LogSum::default(), 0.0);
+        for _ in 0..a.collisions {
+            time += billiard.step_tangent(&mut ball, &mut v)?.time();
+            let norm = v[0].norm();
+            logs.push(norm);
+            v[0] = v[0] * (1.0 / norm);
+        }
+        sum += logs.total() / time;
+    }
+    report("tangent", t0, sum / n as f64);
+
+    let t0 = start();
+    let mut sum = 0.0;
+    for s in starts.iter().take(n) {
+        let mut ball = billiard.launch(*s)?;
+        let mut v: [TangentVector; 5] = std::array::from_fn(|j| {
+            let mut z = [0.0; 5];
+            z[j] = 1.0;
+            TangentVector::from_array(z)
+        });
+        let (mut logs, mut time) = ([LogSum::default(); 5], 0.0);
+        for _ in 0..a.collisions {
+            time += billiard.step_tangent(&mut ball, &mut v)?.time();
+            for i in 0..5 {
+                for j in 0..i {
+                    let p = v[i].dot(&v[j]);
+                    v[i] = v[i] - v[j] * p;
+                }
+                let norm = v[i].norm();
+                v[i] = v[i] * (1.0 / norm);
+                logs[i].push(norm);
+            }
+        }
+        sum += logs[0].total() / time;
+    }
+    report("spectrum", t0, sum / n as f64);
     Ok(())
+}
+
+/// `Σ ln` of growth factors with one `ln` per `1e±150` of their product (as
+/// the scalar path keeps it).
+#[derive(Clone, Copy)]
+struct LogSum {
+    product: f64,
+    sum: f64,
+}
+
+impl Default for LogSum {
+    fn default() -> Self {
+        LogSum {
+            product: 1.0,
+            sum: 0.0,
+        }
+    }
+}
+
+impl LogSum {
+    fn push(&mut self, factor: f64) {
+        self.product *= factor;
+        if !(1e-150..=1e150).contains(&self.product) {
+            self.sum += self.product.ln();
+            self.product = 1.0;
+        }
+    }
+    fn total(&self) -> f64 {
+        self.sum + self.product.ln()
+    }
 }

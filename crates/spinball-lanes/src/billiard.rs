@@ -8,7 +8,7 @@
 //! threads, and turns a trajectory that went non-finite into an error naming
 //! its initial condition.
 
-use spinball_core::{Billiard, SpinLaw, State, TangentVector};
+use spinball_core::{Billiard, MAX_QR_INTERVAL, SpinLaw, State, TangentVector};
 use spinball_geometry::{Boundary, Shape, Table};
 
 use crate::dispatch::Dispatch;
@@ -25,10 +25,6 @@ use crate::outcome::{Flight, SpectrumStretch, Stretch};
 /// the last chunk of a run has lanes idling in a partial register group.
 /// (Any split gives the same numbers; this is about speed only.)
 pub const CHUNK: usize = 96;
-
-/// Largest accepted `qr_interval` of [`LaneBilliard::spectrum`] (as the
-/// scalar `spinball_analysis::MAX_QR_INTERVAL`).
-pub const MAX_QR_INTERVAL: u32 = 32;
 
 /// A spinning billiard whose ensembles run in vector lanes.
 ///

@@ -35,8 +35,7 @@
 //! any lane count, chunking or thread count.
 //!
 //! ```
-//! use spinball_analysis::random_direction;
-//! use spinball_core::{Sampler, SpinLaw, ic_rng};
+//! use spinball_core::{Sampler, SpinLaw, ic_rng, random_direction};
 //! use spinball_geometry::Stadium;
 //! use spinball_lanes::LaneBilliard;
 //!
@@ -88,7 +87,10 @@ mod kernels;
 mod lanes;
 mod outcome;
 
-pub use billiard::{CHUNK, LaneBilliard, MAX_QR_INTERVAL, has_lane_form};
+pub use billiard::{CHUNK, LaneBilliard, has_lane_form};
 pub use error::LanesError;
 pub use isa::{Isa, IsaError};
 pub use outcome::{Flight, SpectrumStretch, Stretch};
+/// Largest accepted `qr_interval` of [`LaneBilliard::spectrum`] (shared with
+/// the scalar `lyapunov_spectrum` of `spinball-analysis`).
+pub use spinball_core::MAX_QR_INTERVAL;

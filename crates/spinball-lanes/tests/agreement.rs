@@ -4,36 +4,30 @@
 //! - Plain trajectories are **bitwise** `Billiard::step` (end states by `==`,
 //!   which leaves only the sign of a zero open; times by their bits), over
 //!   long runs: the lanes perform the same floating-point operations.
-//! - Finite differences: the trajectories are bitwise the scalar ones, so
-//!   `Σ ln(δ/δ0)` differs from `largest_lyapunov` only by how the product of
-//!   the factors is rounded (`dist·(1/δ0)` against `dist/δ0`, one `ln` at the
-//!   end against one every `1e±150`): a few ulps per factor, `~1e-13`
-//!   relative over these runs.
-//! - Exact tangent: the tangent map is bitwise `TangentFrame::apply`; the
-//!   scalar normalises the vector every step (rounding), the lanes rescale
-//!   by exact powers of two. Where the vector's direction converges
-//!   (chaotic orbits) the difference stays at rounding level (`1e-16`); on
-//!   regular and mixed orbits it grows slowly (`≤ 5e-11` relative after
-//!   5000 collisions in a survey of 40 paper-sampled starts per table and
-//!   α). A near-grazing collision is ill conditioned: its tangent map has
-//!   entries `~1/(n·v)`, `1e9` for the grazing starts below, and amplifies
-//!   any rounding difference in the incoming vector by that much (the
-//!   scalar's per-step normalisation rounds, the lanes' powers of two do
-//!   not); there the two part by up to `3e-6` relative (seen: rectangle,
-//!   α = 1, a ball sliding along the top wall). Tolerances: `1e-10` for
-//!   sampled starts, `1e-4` for the grazing ones.
+//! - Finite differences: the reference and shadow trajectories are bitwise
+//!   the scalar ones (`Billiard::step`, the shadow put back along the
+//!   separation), so `Σ ln(δ/δ0)` differs only by how the product of the
+//!   factors is rounded: a few ulps per factor.
+//! - Exact tangent: the tangent map is bitwise `Billiard::step_tangent`;
+//!   with the scalar vector rescaled by exact powers of two too, the lanes'
+//!   vector is the scalar's times a power of two and `Σ ln` agrees to the
+//!   rounding of the final `ln`, grazing starts included.
 //! - Spectrum: the same tangent map and Gram–Schmidt as the scalar;
 //!   differences from the product of `R_ii` only.
+//!
+//! The comparison with the exponents of `spinball-analysis`
+//! (`largest_lyapunov`, `lyapunov_spectrum`, which normalise every step) is
+//! in `crates/spinball-analysis/tests/lane_agreement.rs`: this crate cannot
+//! depend on that one.
 //!
 //! Start sets include the paper's and the microcanonical samplers, balls
 //! shot exactly into corners (rectangle, Sinai box) and junctions
 //! (stadium), and near-grazing rays along flat walls and past the Sinai
 //! disk; counts are not multiples of any lane count (tails).
 
-use spinball_analysis::{
-    LyapunovOptions, Method, SpectrumOptions, largest_lyapunov, lyapunov_spectrum, random_direction,
+use spinball_core::{
+    Ball, Billiard, Pcg64, Sampler, SpinLaw, State, TangentVector, ic_rng, random_direction,
 };
-use spinball_core::{Billiard, Pcg64, Sampler, SpinLaw, State, TangentVector, ic_rng};
 use spinball_geometry::{Boundary, Circle, DVec2, Rectangle, Sinai, Stadium, Table};
 use spinball_lanes::{Isa, LaneBilliard, LanesError};
 
@@ -215,45 +209,74 @@ fn plain_trajectories_are_bitwise_the_scalar_step() {
 }
 
 #[test]
-fn finite_differences_match_largest_lyapunov() {
+fn finite_differences_follow_the_scalar_shadow() {
+    // The scalar finite-difference method written out with
+    // `spinball-core` (as `largest_lyapunov` runs it): the reference and the
+    // shadow take their own `Billiard::step`, the separation is measured and
+    // the shadow put back `δ0` from the reference along it. The lanes' Σ ln
+    // differs only by the rounding of the product of the factors.
     const COLLISIONS: u64 = 600;
+    const DELTA0: f64 = 1e-7;
     for table in tables() {
         for law in laws() {
             let ics = ics(&table, &law, 9);
             let starts: Vec<State> = ics.iter().map(|x| x.0).collect();
             let dirs: Vec<TangentVector> = ics.iter().map(|x| x.1).collect();
             let billiard = Billiard::new(table, law);
-            let opts = LyapunovOptions::new(COLLISIONS, Method::default());
-            let want: Vec<_> = ics
+            let offset = |z: &State, d: TangentVector| {
+                let (z, d) = (z.to_array(), d.to_array());
+                State::from_array(std::array::from_fn(|i| z[i] + d[i]))
+            };
+            let want: Vec<(f64, f64, State)> = ics
                 .iter()
-                .map(|(s, _, rng)| {
-                    largest_lyapunov(&billiard, *s, &opts, &mut rng.clone()).unwrap()
+                .map(|(s, dir, _)| {
+                    let mut ball = billiard.launch(*s).unwrap();
+                    let mut shadow = Ball::new(offset(s, *dir * DELTA0), &law).unwrap();
+                    let (mut log, mut time) = (0.0, 0.0);
+                    for _ in 0..COLLISIONS {
+                        time += billiard.step(&mut ball).unwrap().time();
+                        billiard.step(&mut shadow).unwrap();
+                        let (a, b) = (ball.state().to_array(), shadow.state().to_array());
+                        let d = TangentVector::from_array(std::array::from_fn(|i| b[i] - a[i]));
+                        let dist = d.norm();
+                        log += (dist / DELTA0).ln();
+                        shadow =
+                            Ball::new(offset(ball.state(), d * (DELTA0 / dist)), &law).unwrap();
+                    }
+                    (log, time, *ball.state())
                 })
                 .collect();
             for lanes in lanes_for(&table, &law) {
-                let got = lanes.lyapunov_fd(&starts, &dirs, 1e-7, COLLISIONS).unwrap();
-                for (i, (g, w)) in got.iter().zip(&want).enumerate() {
+                let got = lanes
+                    .lyapunov_fd(&starts, &dirs, DELTA0, COLLISIONS)
+                    .unwrap();
+                for (i, (g, (log, time, end))) in got.iter().zip(&want).enumerate() {
                     let what = format!("{table} α={} {} ic {i}", law.alpha(), lanes.isa());
-                    assert_eq!(g.time.to_bits(), w.time.to_bits(), "time {what}");
-                    close(
-                        g.log_stretch,
-                        w.per_collision * COLLISIONS as f64,
-                        1e-12,
-                        &what,
-                    );
-                    assert_eq!(
-                        g.end,
-                        scalar_end(&table, &law, starts[i], COLLISIONS).0,
-                        "{what}"
-                    );
+                    assert_eq!(g.time.to_bits(), time.to_bits(), "time {what}");
+                    assert_eq!(g.end, *end, "{what}");
+                    close(g.log_stretch, *log, 1e-12, &what);
                 }
             }
         }
     }
 }
 
+/// `v` scaled by the power of two that brings its largest component into
+/// `[1, 2)` (exact), and the power taken off.
+fn pow2_rescale(v: TangentVector) -> (TangentVector, i64) {
+    let m = v.to_array().iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let e = (m.to_bits() >> 52) as i64 - 1023;
+    (v * f64::from_bits(((1023 - e) as u64) << 52), e)
+}
+
 #[test]
-fn exact_tangent_matches_largest_lyapunov() {
+fn exact_tangent_follows_the_scalar_tangent_map() {
+    // `Billiard::step_tangent`, with the vector rescaled by exact powers of
+    // two rather than normalised: the tangent map is linear and a power of
+    // two scales every rounding exactly, so the lanes' vector is the
+    // scalar's times a power of two, bit for bit, and Σ ln differs only by
+    // the rounding of the final `ln` — even for the grazing starts, whose
+    // collisions amplify any difference by `~1/(n·v)`.
     const COLLISIONS: u64 = 600;
     for table in tables() {
         for law in laws() {
@@ -261,26 +284,28 @@ fn exact_tangent_matches_largest_lyapunov() {
             let starts: Vec<State> = ics.iter().map(|x| x.0).collect();
             let dirs: Vec<TangentVector> = ics.iter().map(|x| x.1).collect();
             let billiard = Billiard::new(table, law);
-            let opts = LyapunovOptions::new(COLLISIONS, Method::Tangent);
-            let want: Vec<_> = ics
+            let want: Vec<(f64, f64)> = ics
                 .iter()
-                .map(|(s, _, rng)| {
-                    largest_lyapunov(&billiard, *s, &opts, &mut rng.clone()).unwrap()
+                .map(|(s, dir, _)| {
+                    let mut ball = billiard.launch(*s).unwrap();
+                    let mut v = [*dir];
+                    let (mut powers, mut time) = (0i64, 0.0);
+                    for _ in 0..COLLISIONS {
+                        time += billiard.step_tangent(&mut ball, &mut v).unwrap().time();
+                        let (w, e) = pow2_rescale(v[0]);
+                        v[0] = w;
+                        powers += e;
+                    }
+                    let log = v[0].norm().ln() + powers as f64 * std::f64::consts::LN_2;
+                    (log, time)
                 })
                 .collect();
-            let sampled = ics.len() - special(&table).len();
             for lanes in lanes_for(&table, &law) {
                 let got = lanes.lyapunov_tangent(&starts, &dirs, COLLISIONS).unwrap();
-                for (i, (g, w)) in got.iter().zip(&want).enumerate() {
+                for (i, (g, (log, time))) in got.iter().zip(&want).enumerate() {
                     let what = format!("{table} α={} {} ic {i}", law.alpha(), lanes.isa());
-                    assert_eq!(g.time.to_bits(), w.time.to_bits(), "time {what}");
-                    let tol = if i < sampled { 1e-10 } else { 1e-4 };
-                    close(
-                        g.log_stretch,
-                        w.per_collision * COLLISIONS as f64,
-                        tol,
-                        &what,
-                    );
+                    assert_eq!(g.time.to_bits(), time.to_bits(), "time {what}");
+                    close(g.log_stretch, *log, 1e-12, &what);
                 }
             }
         }
@@ -305,7 +330,10 @@ fn frame_from(rng: &mut Pcg64) -> [TangentVector; 5] {
 }
 
 #[test]
-fn spectrum_matches_lyapunov_spectrum() {
+fn spectrum_follows_the_scalar_tangent_map_and_gram_schmidt() {
+    // Five vectors through `Billiard::step_tangent`, modified Gram–Schmidt
+    // every `qr` collisions and after the last (as `lyapunov_spectrum`);
+    // Σ ln R_ii differs only by the rounding of its products and sums.
     const COLLISIONS: u64 = 400;
     for table in tables() {
         for law in laws() {
@@ -315,64 +343,42 @@ fn spectrum_matches_lyapunov_spectrum() {
                 let frames: Vec<[TangentVector; 5]> =
                     ics.iter().map(|x| frame_from(&mut x.2.clone())).collect();
                 let billiard = Billiard::new(table, law);
-                let opts = SpectrumOptions::new(COLLISIONS, Method::Tangent).with_qr_interval(qr);
-                let want: Vec<_> = ics
+                let want: Vec<([f64; 5], f64)> = starts
                     .iter()
-                    .map(|(s, _, rng)| {
-                        lyapunov_spectrum(&billiard, *s, &opts, &mut rng.clone()).unwrap()
+                    .zip(&frames)
+                    .map(|(s, frame)| {
+                        let mut ball = billiard.launch(*s).unwrap();
+                        let mut v = *frame;
+                        let (mut logs, mut time) = ([0.0; 5], 0.0);
+                        for n in 1..=COLLISIONS {
+                            time += billiard.step_tangent(&mut ball, &mut v).unwrap().time();
+                            if n % u64::from(qr) == 0 || n == COLLISIONS {
+                                for i in 0..5 {
+                                    for j in 0..i {
+                                        let p = v[i].dot(&v[j]);
+                                        v[i] = v[i] - v[j] * p;
+                                    }
+                                    let norm = v[i].norm();
+                                    v[i] = v[i] * (1.0 / norm);
+                                    logs[i] += norm.ln();
+                                }
+                            }
+                        }
+                        (logs, time)
                     })
                     .collect();
                 for lanes in lanes_for(&table, &law) {
                     let got = lanes.spectrum(&starts, &frames, COLLISIONS, qr).unwrap();
-                    for (i, (g, w)) in got.iter().zip(&want).enumerate() {
+                    for (i, (g, (logs, time))) in got.iter().zip(&want).enumerate() {
                         let what =
                             format!("{table} α={} qr {qr} {} ic {i}", law.alpha(), lanes.isa());
-                        assert_eq!(g.time.to_bits(), w.time.to_bits(), "time {what}");
-                        for (a, b) in g.exponents().iter().zip(w.exponents) {
-                            close(a * g.time, b * w.time, 1e-10, &what);
+                        assert_eq!(g.time.to_bits(), time.to_bits(), "time {what}");
+                        for (a, b) in g.log_stretch.iter().zip(logs) {
+                            close(*a, *b, 1e-10, &what);
                         }
                     }
                 }
             }
-        }
-    }
-}
-
-#[test]
-fn long_runs_agree_to_rounding_despite_chaos() {
-    // 20 000 collisions of the chaotic stadium: any rounding difference in
-    // the trajectory would have grown to O(1) long before the end; the
-    // exponents still agree to rounding because the trajectories are the
-    // same to the bit.
-    const COLLISIONS: u64 = 20_000;
-    let table = Table::from(Stadium::new(1.0).unwrap());
-    let law = SpinLaw::new(0.5).unwrap();
-    let billiard = Billiard::new(table, law);
-    let mut ics = ics(&table, &law, 4);
-    ics.truncate(8); // sampled starts only (see the module docs on grazing)
-    let starts: Vec<State> = ics.iter().map(|x| x.0).collect();
-    let dirs: Vec<TangentVector> = ics.iter().map(|x| x.1).collect();
-    let lanes = LaneBilliard::new(table, law).unwrap();
-    for (method, got) in [
-        (
-            Method::default(),
-            lanes.lyapunov_fd(&starts, &dirs, 1e-7, COLLISIONS).unwrap(),
-        ),
-        (
-            Method::Tangent,
-            lanes.lyapunov_tangent(&starts, &dirs, COLLISIONS).unwrap(),
-        ),
-    ] {
-        for (i, (g, (s, _, rng))) in got.iter().zip(&ics).enumerate() {
-            let opts = LyapunovOptions::new(COLLISIONS, method);
-            let w = largest_lyapunov(&billiard, *s, &opts, &mut rng.clone()).unwrap();
-            assert_eq!(g.time.to_bits(), w.time.to_bits());
-            close(
-                g.exponent(),
-                w.exponent,
-                1e-9,
-                &format!("{} ic {i}", method.name()),
-            );
         }
     }
 }
