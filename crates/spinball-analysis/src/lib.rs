@@ -71,6 +71,7 @@ pub mod ftle;
 pub mod islands;
 pub mod lyapunov;
 pub mod measurement;
+pub mod paper;
 pub mod parallel;
 pub mod provenance;
 pub mod q_pairs;
