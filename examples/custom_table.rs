@@ -39,7 +39,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .with_seed(args.seed)
         .with_ics(args.pick(64, 2_000, 10_000))
         .with_collisions(args.pick(2_000, 20_000, 50_000))
-        .with_method(Method::Tangent);
+        .with_method(Method::Tangent)
+        .with_threads(args.threads);
     let sweep = AlphaSweep::new(template, &[0.0, 0.25, 0.5, 1.0])?;
     println!("mushroom (cap 1, stem 0.6 × 1), exact tangent method");
     println!("{}", SweepRow::table_header());

@@ -18,138 +18,101 @@
 //! paper: "less than 1 percentage point"). The default runs the paper's
 //! trajectory length (5·10⁴ collisions) because the band depends on it:
 //! a regular trajectory's FTLE decays only like `ln t / t`, and sticky
-//! chaotic ones take long to leave the band. About 4·10⁹ collisions: ~15 s
-//! on two cores with the lane kernels, a few minutes on the scalar path.
+//! chaotic ones take long to leave the band.
 //!
 //! Writes `chaotic_fraction.png`, `chaotic_fraction.csv` (every field of
 //! `SweepRow`, including `chaotic_fraction_band_min/max`) and
 //! `chaotic_fraction.json`.
 
-#[allow(dead_code)]
-mod sweep_support;
-
 use std::process::ExitCode;
-use std::time::Instant;
 
 use serde_json::json;
-use spinball_analysis::{THRESHOLD_BAND, linspace};
-use spinball_plot::{Grid, Legend, LinePlot, Plot, Series, palette};
-use sweep_support::{
-    ALPHA_LABEL, BoxError, Cli, Job, Plan, main_with, paper_markers, report_done, run_jobs,
-    template, unit_grid, write_results,
+use spinball_analysis::{
+    CHAOS_THRESHOLD, LyapunovEstimate, Measurement, THRESHOLD_BAND, linspace, paper,
+};
+use spinball_plot::{
+    ALPHA_LABEL, Grid, Job, Legend, LinePlot, Plan, Series, measured, palette, paper_markers,
+    run_figure, run_jobs, scaled, template, unit_grid, write_curves,
 };
 
 const NAME: &str = "fig_chaotic_fraction";
 const ABOUT: &str = "Chaotic fraction (FTLE > 0.01) vs α for the stadium and Sinai tables, with the 0.001–0.05 threshold band (paper Fig. chaotic_fraction).";
 
+/// Table spec, legend label and the paper's fraction at α = 1.
 const TABLES: [(&str, &str); 2] = [
     ("stadium:a=1", "stadium a = 1"),
     ("sinai:L=2,R=1", "Sinai L = 2, R = 1"),
 ];
+/// The paper's fractions at α = 1, in the order of `TABLES`.
+const AT_ONE: [f64; 2] = [
+    paper::STADIUM_CHAOTIC_FRACTION_ALPHA1,
+    paper::SINAI_CHAOTIC_FRACTION_ALPHA1,
+];
+const PCT: f64 = 100.0;
 
 fn main() -> ExitCode {
-    let cli = Cli::parse(NAME, ABOUT);
-    main_with(NAME, || run(&cli))
-}
-
-fn run(cli: &Cli) -> Result<(), BoxError> {
-    let start = Instant::now();
-    let alphas = cli.pick(vec![0.0, 0.5, 1.0], unit_grid(21), linspace(0.0, 1.0, 50));
-    let plan = cli.pick(
-        Plan::fixed(64, 2_000),
-        Plan::fixed(2_000, 50_000),
-        Plan::fixed(100_000, 50_000),
-    );
-    println!("{NAME} ({} mode): {}", cli.mode(), plan.describe());
-    let jobs = TABLES
-        .iter()
-        .map(|(spec, label)| {
-            Ok(Job {
-                label: label.to_string(),
-                sweep: plan.sweep(template(cli, spec)?, &alphas)?,
-            })
-        })
-        .collect::<Result<Vec<_>, BoxError>>()?;
-    let curves = run_jobs(cli, jobs)?;
-
-    let pct = 100.0;
-    let mut fraction = LinePlot::new()
-        .title("Chaotic fraction (FTLE > 0.01; shaded: thresholds 0.001–0.05)")
-        .x_label(ALPHA_LABEL)
-        .y_label("chaotic fraction f_ch (%)")
-        .legend(Legend::LowerLeft);
-    let mut spread = LinePlot::new()
-        .title("Width of the threshold band")
-        .x_label(ALPHA_LABEL)
-        .y_label("max − min of f_ch over thresholds (pp)")
-        .hline(1.0, "paper: < 1 percentage point")
-        .legend(Legend::UpperLeft);
-    println!("\n  table                alpha   f_ch(0.01)      band 0.001-0.05   width/pp");
-    for (i, c) in curves.iter().enumerate() {
-        let rows = c.rows()?;
-        for r in &rows {
-            println!(
-                "  {:<20} {:>5.3}   {:>5.1} ± {:>3.1}%   {:>5.1}–{:>5.1}%   {:>5.2}",
-                c.label,
-                r.alpha,
-                pct * r.chaotic_fraction,
-                pct * r.chaotic_fraction_sem,
-                pct * r.chaotic_fraction_band_min,
-                pct * r.chaotic_fraction_band_max,
-                pct * (r.chaotic_fraction_band_max - r.chaotic_fraction_band_min)
-            );
-        }
-        fraction = fraction.series(
-            Series::new(
-                format!("{} ± SEM", c.label),
-                rows.iter().map(|r| (r.alpha, pct * r.chaotic_fraction)),
-            )
-            .errors(rows.iter().map(|r| pct * r.chaotic_fraction_sem))
-            .band(
-                rows.iter().map(|r| pct * r.chaotic_fraction_band_min),
-                rows.iter().map(|r| pct * r.chaotic_fraction_band_max),
-            )
-            .color(palette(i)),
+    run_figure(NAME, ABOUT, |args, report| {
+        let alphas = args.pick(vec![0.0, 0.5, 1.0], unit_grid(21), linspace(0.0, 1.0, 50));
+        let plan = args.pick(
+            Plan::fixed(64, 2_000),
+            Plan::fixed(2_000, 50_000),
+            Plan::fixed(100_000, 50_000),
         );
-        spread = spread.series(
-            Series::new(
-                c.label.clone(),
-                rows.iter().map(|r| {
+        println!("{NAME} ({} mode): {plan}", args.mode);
+        let mut jobs = Vec::new();
+        for (spec, label) in TABLES {
+            jobs.push(Job::new(label, &plan, template(args, spec)?, &alphas)?);
+        }
+        let curves = run_jobs(jobs)?;
+
+        let title = "Chaotic fraction (FTLE > 0.01; shaded: thresholds 0.001–0.05)";
+        let mut fraction = LinePlot::with_axes(title, ALPHA_LABEL, "chaotic fraction f_ch (%)")
+            .legend(Legend::LowerLeft);
+        let y = "max − min of f_ch over thresholds (pp)";
+        let mut spread = LinePlot::with_axes("Width of the threshold band", ALPHA_LABEL, y)
+            .hline(
+                PCT * paper::THRESHOLD_BAND_WIDTH,
+                "paper: < 1 percentage point",
+            )
+            .legend(Legend::UpperLeft);
+        println!();
+        for (i, ((c, (_, name)), at_one)) in curves.iter().zip(TABLES).zip(AT_ONE).enumerate() {
+            let f =
+                |e: &LyapunovEstimate| Measurement::new(e.chaotic_fraction, e.chaotic_fraction_sem);
+            let (lo, hi) = (
+                c.rows.iter().map(|r| PCT * r.chaotic_fraction_band_min),
+                c.rows.iter().map(|r| PCT * r.chaotic_fraction_band_max),
+            );
+            let band =
+                measured(format!("{} ± SEM", c.label), scaled(c.points(f), PCT)).band(lo, hi);
+            let paper = format!("paper: {name} ≈ {:.0}% at α = 1", PCT * at_one);
+            fraction = fraction
+                .series(band.color(palette(i)))
+                .series(paper_markers(paper, [(1.0, PCT * at_one)], palette(i)));
+            let width: Vec<(f64, f64)> = c
+                .rows
+                .iter()
+                .map(|r| {
                     (
                         r.alpha,
-                        pct * (r.chaotic_fraction_band_max - r.chaotic_fraction_band_min),
+                        PCT * (r.chaotic_fraction_band_max - r.chaotic_fraction_band_min),
                     )
-                }),
-            )
-            .color(palette(i)),
-        );
-    }
-    fraction = fraction
-        .series(paper_markers(
-            "paper: stadium ≈ 90% at α = 1",
-            [(1.0, 90.0)],
-            palette(6),
-        ))
-        .series(paper_markers(
-            "paper: Sinai ≈ 87% at α = 1",
-            [(1.0, 87.0)],
-            palette(4),
-        ));
-    let png = cli.output("chaotic_fraction.png")?;
-    Grid::new(1, 2)
-        .panel(fraction)
-        .panel(spread)
-        .save_png(&png, 1500, 640)?;
-
-    let settings = json!({
-        "method": "fd",
-        "sampler": "paper",
-        "threshold": spinball_analysis::CHAOS_THRESHOLD,
-        "threshold_band": THRESHOLD_BAND,
-        "alphas": alphas,
-        "plan": plan.json(),
-    });
-    let (csv, json_path) = write_results(cli, "chaotic_fraction", &curves, settings, json!({}))?;
-    report_done(cli, &[&csv, &json_path, &png], start);
-    Ok(())
+                })
+                .collect();
+            let (alpha, widest) = width
+                .iter()
+                .copied()
+                .fold((0.0, 0.0), |m, w| if w.1 > m.1 { w } else { m });
+            println!(
+                "  {}: threshold band at most {widest:.2} pp wide (alpha = {alpha})",
+                c.label
+            );
+            spread = spread.series(Series::new(c.label.clone(), width).color(palette(i)));
+        }
+        let grid = Grid::new(1, 2).panel(fraction).panel(spread);
+        report.png("chaotic_fraction.png", &grid, (1500, 640))?;
+        let extra = json!({"threshold": CHAOS_THRESHOLD, "threshold_band": THRESHOLD_BAND});
+        write_curves(report, "chaotic_fraction", &curves, &extra)?;
+        Ok(())
+    })
 }

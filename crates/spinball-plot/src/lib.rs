@@ -13,8 +13,24 @@
 //! - [`Grid`]: panels side by side (for example 4 tables × 4 values of α),
 //!   with an optional shared [`Colorbar`].
 //!
-//! [`cli::FigureArgs`] parses the `--out/--quick/--paper/--seed` arguments the
-//! figure examples share.
+//! Around the plots, the plumbing the figure examples share, so that each
+//! example only composes calls:
+//! - [`cli`]: the one command-line parser ([`cli::FigureArgs`]: `--out`,
+//!   `--quick`, `--paper`, `--seed`, `--threads` plus an example's own
+//!   options; [`cli::SweepArgs`] for the `sweep` machine interface);
+//! - [`run_figure`]: the `main` of a figure, with a [`Report`] that writes
+//!   PNG, [`Csv`] and JSON files (serde, with a common [`Header`]);
+//! - [`Plan`], [`Job`], [`run_jobs`], [`Curve`]: λ(α) sweeps sized per mode,
+//!   run with rows on stdout and [`Progress`] on stderr, written with
+//!   [`write_curves`]; [`run_scan`] for families of tables with their curved
+//!   share;
+//! - [`measured`] and [`paper_markers`]: series of values ± SEM and of the
+//!   paper's numbers ([`spinball_analysis::paper`]); [`table_i_markdown`]
+//!   and friends set our convergence table beside the paper's Table I.
+//!
+//! These live here, not in the library crates, because only figures need
+//! them: the analysis crates never depend on plotting, argument parsing or
+//! progress display.
 //!
 //! ```no_run
 //! use spinball_geometry::{DVec2, Stadium};
@@ -52,28 +68,59 @@
 #![forbid(unsafe_code)]
 
 mod colormap;
+mod csv;
+mod curves;
 mod error;
+mod figure;
 pub mod font;
 mod format;
 mod grid;
 mod histogram;
 mod lines;
+mod measured;
 mod outline;
+mod plan;
 mod plot;
+mod progress;
+mod rates;
+mod report;
+mod result_plots;
+mod result_tables;
+mod scan;
 mod style;
+mod sweep_json;
+mod table_i;
 mod table_plot;
 
 pub mod cli;
 
 pub use colormap::{PALETTE, palette, viridis};
+pub use csv::{Csv, optional};
+pub use curves::{Curve, CurveSummary, Job, run_jobs, template, write_curves};
 pub use error::PlotError;
+pub use figure::{BoxError, run_figure, run_figure_with};
 pub use format::format_tick;
 pub use grid::{Colorbar, Grid, Panel};
 pub use histogram::{Histogram, Marker};
 pub use lines::{Legend, LineKind, LinePlot, Series};
+pub use measured::{ALPHA_LABEL, LAMBDA_LABEL, measured, measured_band, paper_markers, scaled};
 pub use outline::{ARC_POINTS_PER_TURN, Loop, Outline, ToOutline};
+pub use plan::{Plan, unit_grid};
 pub use plot::{Plot, render_png};
+pub use progress::Progress;
+pub use rates::{CurveRates, relative_drop, relative_spread};
+pub use report::{Header, Report};
+pub use result_plots::{ftle_histogram, log_counts, spectrum_plot};
+pub use result_tables::{
+    histograms_csv, q_pairs_csv, q_populations, spectra_csv, summary_csv, trajectories_csv,
+};
+pub use scan::{Scan, ShareRow, curved_shares, run_scan, share_range, shares_csv, write_shares};
 pub use style::Style;
+pub use sweep_json::{SweepDocument, SweepPoint};
+pub use table_i::{
+    TableIColumn, TableIRecord, TableIRow, table_i_csv, table_i_markdown, table_i_paper,
+    table_i_plot, table_i_reference,
+};
 pub use table_plot::TablePlot;
 
 pub use plotters;

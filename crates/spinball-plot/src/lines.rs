@@ -235,6 +235,14 @@ impl LinePlot {
     pub fn new() -> Self {
         Self::default()
     }
+    /// An empty chart with a title and both axis labels (the usual start).
+    pub fn with_axes(
+        title: impl Into<String>,
+        x_label: impl Into<String>,
+        y_label: impl Into<String>,
+    ) -> Self {
+        Self::new().title(title).x_label(x_label).y_label(y_label)
+    }
     /// Title above the chart.
     pub fn title(mut self, title: impl Into<String>) -> Self {
         self.title = Some(title.into());

@@ -1,5 +1,6 @@
-//! The command line every figure example shares:
-//! `--out DIR`, `--quick`, `--paper`, `--seed N`, `--help`.
+//! The arguments every figure example shares:
+//! `--out DIR`, `--quick`, `--paper`, `--seed N`, `--threads N`, `--help`,
+//! plus any options of its own.
 //!
 //! A figure has three sizes: `--quick` (seconds, what CI runs), the default
 //! (statistics that finish in minutes on a laptop, with error bars) and
@@ -7,18 +8,25 @@
 //! mode so the examples stay thin.
 //!
 //! ```
-//! use spinball_plot::cli::{FigureArgs, Mode, Parsed};
+//! use spinball_plot::cli::{FigureArgs, Mode, Opt, Parsed};
 //! let parsed = FigureArgs::try_parse_from("fig_energy", ["--quick", "--out", "/tmp/e"]).unwrap();
 //! let Parsed::Run(args) = parsed else { panic!() };
 //! assert_eq!(args.mode, Mode::Quick);
 //! assert_eq!(args.pick(500, 5_000, 5_000), 500);
+//!
+//! // An example's own options come after the shared ones.
+//! const ALPHA: Opt = Opt::value("alpha", "A", "spin parameter (default 0.5)");
+//! let Parsed::Run(args) = FigureArgs::try_parse_with("traj", &[ALPHA], ["--alpha", "0.3"]).unwrap()
+//! else { panic!() };
+//! assert_eq!(args.extra.get_or("alpha", 0.5), Ok(0.3));
 //! ```
 
 use std::fmt;
 use std::path::{Path, PathBuf};
 
-use thiserror::Error;
+use spinball_analysis::Threads;
 
+use super::options::{ArgError, Matches, Opt, Parsed, exit_on_error, parse_options, usage_text};
 use crate::error::PlotError;
 
 /// How large a run is.
@@ -43,6 +51,27 @@ impl fmt::Display for Mode {
     }
 }
 
+/// The default seed.
+pub const DEFAULT_SEED: u64 = 2024;
+
+/// The options every figure example takes.
+pub const FIGURE_OPTIONS: [Opt; 5] = [
+    Opt::flag("quick", "small run, seconds (what CI runs)"),
+    Opt::flag("paper", "the paper's sizes"),
+    Opt::value(
+        "out",
+        "DIR",
+        "where to write PNG and CSV/JSON (default out/<example>)",
+    )
+    .short('o'),
+    Opt::value("seed", "N", "seed of the initial conditions (default 2024)"),
+    Opt::value(
+        "threads",
+        "N",
+        "worker threads (default: all cores); results do not depend on it",
+    ),
+];
+
 /// The arguments of a figure example.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct FigureArgs {
@@ -52,39 +81,10 @@ pub struct FigureArgs {
     pub mode: Mode,
     /// Seed of the initial conditions (default 2024).
     pub seed: u64,
-}
-
-/// The default seed.
-pub const DEFAULT_SEED: u64 = 2024;
-
-/// What the command line asked for.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum Parsed {
-    /// Run the figure with these arguments.
-    Run(FigureArgs),
-    /// Print the usage and stop (`--help`).
-    Help,
-}
-
-/// A command line that cannot be read.
-#[derive(Debug, Clone, PartialEq, Eq, Error)]
-#[non_exhaustive]
-pub enum ArgError {
-    /// An option that is not one of ours.
-    #[error("unknown argument `{0}`")]
-    Unknown(String),
-    /// An option that needs a value came last.
-    #[error("`{0}` needs a value")]
-    MissingValue(&'static str),
-    /// The seed is not a non-negative integer.
-    #[error("`--seed {0}`: not a non-negative integer")]
-    BadSeed(String),
-    /// `--quick` and `--paper` together.
-    #[error("`--quick` and `--paper` exclude each other")]
-    ConflictingModes,
-    /// An empty output directory.
-    #[error("`--out` needs a non-empty directory name")]
-    EmptyOut,
+    /// Worker threads (default all cores); results do not depend on it.
+    pub threads: Threads,
+    /// The example's own options (see [`FigureArgs::try_parse_with`]).
+    pub extra: Matches,
 }
 
 impl FigureArgs {
@@ -93,58 +93,63 @@ impl FigureArgs {
     ///
     /// # Errors
     /// An [`ArgError`] saying what is wrong.
-    pub fn try_parse_from<I, S>(name: &str, args: I) -> Result<Parsed, ArgError>
+    pub fn try_parse_from<I, S>(name: &str, args: I) -> Result<Parsed<FigureArgs>, ArgError>
     where
         I: IntoIterator<Item = S>,
         S: Into<String>,
     {
-        let mut out = None;
-        let mut seed = DEFAULT_SEED;
-        let (mut quick, mut paper) = (false, false);
-        let mut it = args.into_iter().map(Into::into);
-        while let Some(arg) = it.next() {
-            let (key, inline) = match arg.split_once('=') {
-                Some((k, v)) if k.starts_with("--") => (k.to_string(), Some(v.to_string())),
-                _ => (arg.clone(), None),
-            };
-            let mut value = |flag: &'static str| {
-                inline
-                    .clone()
-                    .or_else(|| it.next())
-                    .ok_or(ArgError::MissingValue(flag))
-            };
-            match key.as_str() {
-                "-h" | "--help" => return Ok(Parsed::Help),
-                "--quick" if inline.is_none() => quick = true,
-                "--paper" if inline.is_none() => paper = true,
-                "--out" | "-o" => {
-                    let v = value("--out")?;
-                    if v.is_empty() {
-                        return Err(ArgError::EmptyOut);
-                    }
-                    out = Some(PathBuf::from(v));
-                }
-                "--seed" => {
-                    let v = value("--seed")?;
-                    seed = v.trim().parse().map_err(|_| ArgError::BadSeed(v.clone()))?;
-                }
-                _ => return Err(ArgError::Unknown(arg)),
-            }
+        Self::try_parse_with(name, &[], args)
+    }
+
+    /// As [`try_parse_from`](Self::try_parse_from), also accepting the
+    /// example's own options `extra` (found in [`FigureArgs::extra`]).
+    ///
+    /// # Errors
+    /// An [`ArgError`] saying what is wrong.
+    pub fn try_parse_with<I, S>(
+        name: &str,
+        extra: &[Opt],
+        args: I,
+    ) -> Result<Parsed<FigureArgs>, ArgError>
+    where
+        I: IntoIterator<Item = S>,
+        S: Into<String>,
+    {
+        let options: Vec<Opt> = FIGURE_OPTIONS.iter().chain(extra).copied().collect();
+        let m = match parse_options(&options, args)? {
+            Parsed::Run(m) => m,
+            Parsed::Help => return Ok(Parsed::Help),
+        };
+        if m.flag("quick") && m.flag("paper") {
+            return Err(ArgError::Conflict("quick", "paper"));
         }
-        if quick && paper {
-            return Err(ArgError::ConflictingModes);
-        }
-        let mode = if quick {
+        let mode = if m.flag("quick") {
             Mode::Quick
-        } else if paper {
+        } else if m.flag("paper") {
             Mode::Paper
         } else {
             Mode::Default
         };
+        let out = match m.value("out") {
+            Some("") => return Err(ArgError::invalid("out", "", "needs a directory name")),
+            Some(dir) => PathBuf::from(dir),
+            None => Path::new("out").join(name),
+        };
+        let seed = m
+            .get::<u64>("seed")
+            .map_err(|_| not_integer("seed", &m, "non-negative"))?
+            .unwrap_or(DEFAULT_SEED);
+        let threads = match m.get::<usize>("threads") {
+            Ok(None) => Threads::All,
+            Ok(Some(n)) if n >= 1 => Threads::Fixed(n),
+            _ => return Err(not_integer("threads", &m, "positive")),
+        };
         Ok(Parsed::Run(FigureArgs {
-            out: out.unwrap_or_else(|| Path::new("out").join(name)),
+            out,
             mode,
             seed,
+            threads,
+            extra: m,
         }))
     }
 
@@ -152,17 +157,14 @@ impl FigureArgs {
     /// on a bad argument print the error and the usage to stderr and exit 2.
     /// `about` is one line saying what the figure shows.
     pub fn parse_or_exit(name: &str, about: &str) -> FigureArgs {
-        match Self::try_parse_from(name, std::env::args().skip(1)) {
-            Ok(Parsed::Run(args)) => args,
-            Ok(Parsed::Help) => {
-                println!("{}", usage(name, about));
-                std::process::exit(0);
-            }
-            Err(e) => {
-                eprintln!("{name}: {e}\n\n{}", usage(name, about));
-                std::process::exit(2);
-            }
-        }
+        Self::parse_or_exit_with(name, about, &[])
+    }
+
+    /// [`parse_or_exit`](Self::parse_or_exit) with the example's own
+    /// options `extra`.
+    pub fn parse_or_exit_with(name: &str, about: &str, extra: &[Opt]) -> FigureArgs {
+        let parsed = Self::try_parse_with(name, extra, std::env::args().skip(1));
+        exit_on_error(name, &usage_with(name, about, extra), parsed)
     }
 
     /// `quick`, `default` or `paper` by the mode.
@@ -172,6 +174,11 @@ impl FigureArgs {
             Mode::Default => default,
             Mode::Paper => paper,
         }
+    }
+
+    /// The number of worker threads `threads` means on this machine.
+    pub fn thread_count(&self) -> usize {
+        self.threads.count()
     }
 
     /// The path of `file` in the output directory, creating the directory.
@@ -187,17 +194,26 @@ impl FigureArgs {
     }
 }
 
+fn not_integer(option: &'static str, m: &Matches, kind: &str) -> ArgError {
+    ArgError::invalid(
+        option,
+        m.value(option).unwrap_or_default(),
+        format!("not a {kind} integer"),
+    )
+}
+
 /// The usage text of a figure example.
 pub fn usage(name: &str, about: &str) -> String {
-    format!(
-        "{about}\n\n\
-         usage: cargo run --release --example {name} -- [--quick | --paper] [--out DIR] [--seed N]\n\n\
-         options:\n  \
-         --out DIR   where to write PNG and CSV/JSON (default out/{name})\n  \
-         --quick     small run, seconds (what CI runs)\n  \
-         --paper     the paper's sizes\n  \
-         --seed N    seed of the initial conditions (default {DEFAULT_SEED})\n  \
-         -h, --help  this text"
+    usage_with(name, about, &[])
+}
+
+/// The usage text of a figure example with its own options `extra`.
+pub fn usage_with(name: &str, about: &str, extra: &[Opt]) -> String {
+    let options: Vec<Opt> = FIGURE_OPTIONS.iter().chain(extra).copied().collect();
+    usage_text(
+        about,
+        &format!("cargo run --release --example {name} --"),
+        &options,
     )
 }
 
@@ -218,14 +234,15 @@ mod tests {
         assert_eq!(a.out, Path::new("out/fig"));
         assert_eq!(a.mode, Mode::Default);
         assert_eq!(a.seed, DEFAULT_SEED);
+        assert_eq!(a.threads, Threads::All);
     }
 
     #[test]
     fn all_options() {
-        let a = run(&["--paper", "--out=/tmp/x", "--seed", "7"]).unwrap();
+        let a = run(&["--paper", "--out=/tmp/x", "--seed", "7", "--threads", "3"]).unwrap();
         assert_eq!(
-            (a.mode, a.out, a.seed),
-            (Mode::Paper, PathBuf::from("/tmp/x"), 7)
+            (a.mode, a.out, a.seed, a.threads),
+            (Mode::Paper, PathBuf::from("/tmp/x"), 7, Threads::Fixed(3))
         );
         assert_eq!(run(&["--quick", "-o", "d"]).unwrap().mode, Mode::Quick);
         assert_eq!(
@@ -237,16 +254,47 @@ mod tests {
     #[test]
     fn errors() {
         assert_eq!(run(&["--fast"]), Err(ArgError::Unknown("--fast".into())));
-        assert_eq!(run(&["--out"]), Err(ArgError::MissingValue("--out")));
-        assert_eq!(run(&["--seed", "-1"]), Err(ArgError::BadSeed("-1".into())));
+        assert_eq!(run(&["--out"]), Err(ArgError::MissingValue("out")));
+        assert_eq!(
+            run(&["--seed", "-1"]),
+            Err(ArgError::invalid(
+                "seed",
+                "-1",
+                "not a non-negative integer"
+            ))
+        );
+        assert_eq!(
+            run(&["--threads", "0"]),
+            Err(ArgError::invalid("threads", "0", "not a positive integer"))
+        );
         assert_eq!(
             run(&["--quick", "--paper"]),
-            Err(ArgError::ConflictingModes)
+            Err(ArgError::Conflict("quick", "paper"))
         );
-        assert_eq!(run(&["--out="]), Err(ArgError::EmptyOut));
-        assert_eq!(
-            run(&["--quick=1"]),
-            Err(ArgError::Unknown("--quick=1".into()))
-        );
+        assert!(matches!(
+            run(&["--out="]),
+            Err(ArgError::Invalid { option: "out", .. })
+        ));
+        assert_eq!(run(&["--quick=1"]), Err(ArgError::UnexpectedValue("quick")));
+    }
+
+    #[test]
+    fn extra_options_and_usage() {
+        let extra = [Opt::value("alpha", "A", "spin parameter")];
+        let Parsed::Run(a) =
+            FigureArgs::try_parse_with("traj", &extra, ["--quick", "--alpha=0.25"]).unwrap()
+        else {
+            panic!("help")
+        };
+        assert_eq!(a.extra.get::<f64>("alpha"), Ok(Some(0.25)));
+        assert!(a.extra.flag("quick"));
+        assert!(FigureArgs::try_parse_from("traj", ["--alpha", "1"]).is_err());
+        let u = usage_with("traj", "Trajectories.", &extra);
+        assert!(u.starts_with(
+            "Trajectories.\n\nusage: cargo run --release --example traj -- [--quick] [--paper]"
+        ));
+        for option in ["--threads N", "--alpha A", "-o, --out DIR", "-h, --help"] {
+            assert!(u.contains(option), "{option} missing from\n{u}");
+        }
     }
 }
