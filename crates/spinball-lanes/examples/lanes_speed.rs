@@ -9,7 +9,14 @@
 //! ```
 //!
 //! The defaults are the issue's benchmark: stadium `a = 1`, α = 0.5, 4000
-//! initial conditions × 20000 collisions on 2 threads. Each line prints the
+//! initial conditions × 20000 collisions on 2 threads.
+//!
+//! `--table` takes a built-in table's spec (`stadium:a=1`, `sinai:L=2,R=1`,
+//! ...) or one of these tables built from segments (`SegmentTable`):
+//! `segments:stadium` (the stadium `a = 1`: two lines and two half-circle
+//! arcs), `segments:sinai` (the Sinai table `L = 2, R = 1`: four lines and a
+//! circular hole), `segments:mushroom` (the mushroom of the `SegmentTable`
+//! docs) and `segments:gon20` (a non-convex 20-gon, no two walls parallel). Each line prints the
 //! median over `--repeat` runs of the wall time per initial condition and
 //! collision (the whole run: all threads together) and of the CPU time per
 //! IC-step (summed over threads: the cost per core, which stays meaningful
@@ -19,14 +26,76 @@ use std::time::Instant;
 
 use spinball_analysis::random_direction;
 use spinball_core::{Sampler, SpinLaw, State, TangentVector, ic_rng};
-use spinball_geometry::Table;
+use spinball_geometry::{
+    ArcSegment, Boundary, DVec2, LineSegment, Segment, SegmentTable, Table, TableVisitor,
+};
 use spinball_lanes::{Isa, LaneBilliard};
+
+/// The table to run: a built-in one or one built from segments.
+enum Subject {
+    Builtin(Table),
+    Segments(SegmentTable),
+}
+
+impl Subject {
+    fn parse(spec: &str) -> Result<Subject, Box<dyn std::error::Error>> {
+        use std::f64::consts::{FRAC_PI_2, PI, TAU};
+        let p = DVec2::new;
+        let line = |a, b| LineSegment::new(a, b).map(Segment::Line);
+        let arc = |c, r, start, sweep| ArcSegment::new(c, r, start, sweep).map(Segment::Arc);
+        let table = match spec {
+            "segments:stadium" => SegmentTable::new(vec![
+                line(p(-1.0, -1.0), p(1.0, -1.0))?,
+                arc(p(1.0, 0.0), 1.0, -FRAC_PI_2, PI)?,
+                line(p(1.0, 1.0), p(-1.0, 1.0))?,
+                arc(p(-1.0, 0.0), 1.0, FRAC_PI_2, PI)?,
+            ])?,
+            "segments:sinai" => SegmentTable::with_holes(
+                vec![
+                    line(p(-2.0, -2.0), p(2.0, -2.0))?,
+                    line(p(2.0, -2.0), p(2.0, 2.0))?,
+                    line(p(2.0, 2.0), p(-2.0, 2.0))?,
+                    line(p(-2.0, 2.0), p(-2.0, -2.0))?,
+                ],
+                vec![vec![arc(DVec2::ZERO, 1.0, 0.0, -TAU)?]],
+            )?,
+            "segments:mushroom" => {
+                let (r, w, h) = (1.0, 0.3, 1.0);
+                SegmentTable::new(vec![
+                    line(p(-w, -h), p(w, -h))?,
+                    line(p(w, -h), p(w, 0.0))?,
+                    line(p(w, 0.0), p(r, 0.0))?,
+                    arc(DVec2::ZERO, r, 0.0, PI)?,
+                    line(p(-r, 0.0), p(-w, 0.0))?,
+                    line(p(-w, 0.0), p(-w, -h))?,
+                ])?
+            }
+            "segments:gon20" => {
+                // Star-shaped, radii alternating about 1 and 0.8: no two
+                // walls parallel, so none is cast as a pair.
+                let v: Vec<DVec2> = (0..20)
+                    .map(|k| {
+                        let radius = if k % 2 == 0 {
+                            1.0
+                        } else {
+                            0.8 + 0.01 * k as f64
+                        };
+                        DVec2::from_angle(TAU * k as f64 / 20.0) * radius
+                    })
+                    .collect();
+                SegmentTable::polygon(&v)?
+            }
+            other => return Ok(Subject::Builtin(other.parse()?)),
+        };
+        Ok(Subject::Segments(table))
+    }
+}
 
 struct Args {
     ics: u64,
     collisions: u64,
     threads: usize,
-    table: Table,
+    table: String,
     alpha: f64,
     isas: Vec<Isa>,
     kernels: Vec<String>,
@@ -39,7 +108,7 @@ fn parse() -> Result<Args, Box<dyn std::error::Error>> {
         ics: 4000,
         collisions: 20_000,
         threads: 2,
-        table: "stadium:a=1".parse()?,
+        table: "stadium:a=1".to_string(),
         alpha: 0.5,
         isas: Isa::available(),
         kernels: ["plain", "fd", "tangent", "spectrum"]
@@ -59,7 +128,7 @@ fn parse() -> Result<Args, Box<dyn std::error::Error>> {
             "--ics" => a.ics = value.parse()?,
             "--collisions" => a.collisions = value.parse()?,
             "--threads" => a.threads = value.parse()?,
-            "--table" => a.table = value.parse()?,
+            "--table" => a.table = value,
             "--alpha" => a.alpha = value.parse()?,
             "--repeat" => a.repeat = value.parse()?,
             "--isa" if value != "all" => a.isas = vec![value.parse::<Isa>()?.checked()?],
@@ -90,14 +159,37 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
+type Outcome = Result<(), Box<dyn std::error::Error>>;
+
+fn main() -> Outcome {
     let a = parse()?;
+    match Subject::parse(&a.table)? {
+        // The concrete built-in table, so the scalar path runs with static
+        // dispatch as the ensembles do.
+        Subject::Builtin(table) => table.visit(Bench { a: &a }),
+        Subject::Segments(table) => bench(&a, &table),
+    }
+}
+
+/// [`bench`] with the concrete built-in table.
+struct Bench<'a> {
+    a: &'a Args,
+}
+
+impl TableVisitor for Bench<'_> {
+    type Output = Outcome;
+    fn visit<B: Boundary + Clone + Send + Sync>(self, table: &B) -> Outcome {
+        bench(self.a, table)
+    }
+}
+
+fn bench<B: Boundary + Clone + Sync>(a: &Args, table: &B) -> Outcome {
     let law = SpinLaw::extended(a.alpha)?;
     let mut starts: Vec<State> = Vec::new();
     let mut dirs: Vec<TangentVector> = Vec::new();
     for i in 0..a.ics {
         let mut rng = ic_rng(1, i);
-        starts.push(Sampler::Paper.sample(&a.table, &law, &mut rng));
+        starts.push(Sampler::Paper.sample(table, &law, &mut rng));
         dirs.push(random_direction(&mut rng));
     }
     let frames: Vec<[TangentVector; 5]> = (0..a.ics as usize)
@@ -115,7 +207,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         a.table, a.alpha, a.ics, a.collisions, a.threads, a.repeat
     );
     for isa in &a.isas {
-        let lanes = LaneBilliard::new(a.table, law)?
+        let lanes = LaneBilliard::new(table.clone(), law)?
             .with_isa(*isa)?
             .with_threads(a.threads)?;
         for k in &a.kernels {
@@ -179,64 +271,66 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
     }
     if a.scalar {
-        scalar(&a, &law, &starts, &dirs)?;
+        scalar(a, table, &law, &starts)?;
     }
     Ok(())
 }
 
 /// The scalar path (`spinball-core`, `spinball-analysis`) on one thread,
-/// over a tenth of the initial conditions: the specification the lanes are
-/// tested against, and the speed they replace.
-fn scalar(
-    a: &Args,
-    law: &SpinLaw,
-    starts: &[State],
-    _dirs: &[TangentVector],
-) -> Result<(), Box<dyn std::error::Error>> {
+/// over a tenth of the initial conditions, for the kernels asked for
+/// (median of `--repeat` runs): the specification the lanes are tested
+/// against, and the speed they replace.
+fn scalar<B: Boundary + Clone>(a: &Args, table: &B, law: &SpinLaw, starts: &[State]) -> Outcome {
     use spinball_analysis::{
         LyapunovOptions, Method, SpectrumOptions, largest_lyapunov, lyapunov_spectrum,
     };
     use spinball_core::Billiard;
-    let Table::Stadium(stadium) = a.table else {
-        return Err("--scalar is implemented for the stadium".into());
-    };
-    let billiard = Billiard::new(stadium, *law);
+    let billiard = Billiard::new(table.clone(), *law);
     let n = (starts.len() / 10).max(1);
     let steps = n as f64 * a.collisions as f64;
-    let report = |name: &str, (t0, c0): (Instant, Option<f64>)| {
-        let cpu = match (c0, cpu_seconds()) {
-            (Some(c0), Some(c1)) => (c1 - c0) / steps * 1e9,
-            _ => f64::NAN,
+    for k in &a.kernels {
+        let mut times = Vec::new();
+        let mut cpu = Vec::new();
+        for _ in 0..a.repeat {
+            let c0 = cpu_seconds();
+            let t0 = Instant::now();
+            for s in starts.iter().take(n) {
+                let mut rng = ic_rng(1, 0);
+                let lyapunov = |method| {
+                    let opts = LyapunovOptions::new(a.collisions, method);
+                    largest_lyapunov(&billiard, *s, &opts, &mut rng.clone()).map(|_| ())
+                };
+                match k.as_str() {
+                    "plain" => {
+                        let mut ball = billiard.launch(*s)?;
+                        for _ in 0..a.collisions {
+                            billiard.step(&mut ball)?;
+                        }
+                    }
+                    "fd" => lyapunov(Method::default())?,
+                    "tangent" => lyapunov(Method::Tangent)?,
+                    "spectrum" => {
+                        let opts = SpectrumOptions::new(a.collisions, Method::Tangent);
+                        lyapunov_spectrum(&billiard, *s, &opts, &mut rng)?;
+                    }
+                    other => return Err(format!("unknown kernel {other}").into()),
+                }
+            }
+            times.push(t0.elapsed().as_secs_f64());
+            if let (Some(c0), Some(c1)) = (c0, cpu_seconds()) {
+                cpu.push(c1 - c0);
+            }
+        }
+        let c = if cpu.is_empty() {
+            f64::NAN
+        } else {
+            median(cpu)
         };
         println!(
-            "scalar    {name:<9} wall {:8.3} ns/IC-step  cpu {cpu:8.3} ns/IC-step  (1 thread)",
-            t0.elapsed().as_secs_f64() / steps * 1e9
+            "scalar    {k:<9} wall {:8.3} ns/IC-step  cpu {:8.3} ns/IC-step  (1 thread)",
+            median(times) / steps * 1e9,
+            c / steps * 1e9
         );
-    };
-    let start = || (Instant::now(), cpu_seconds());
-    let t0 = start();
-    for s in starts.iter().take(n) {
-        let mut ball = billiard.launch(*s)?;
-        for _ in 0..a.collisions {
-            billiard.step(&mut ball)?;
-        }
     }
-    report("plain", t0);
-    for method in [Method::default(), Method::Tangent] {
-        let t0 = start();
-        for s in starts.iter().take(n) {
-            let mut rng = ic_rng(1, 0);
-            let opts = LyapunovOptions::new(a.collisions, method);
-            largest_lyapunov(&billiard, *s, &opts, &mut rng)?;
-        }
-        report(method.name(), t0);
-    }
-    let t0 = start();
-    for s in starts.iter().take(n) {
-        let mut rng = ic_rng(1, 0);
-        let opts = SpectrumOptions::new(a.collisions, Method::Tangent);
-        lyapunov_spectrum(&billiard, *s, &opts, &mut rng)?;
-    }
-    report("spectrum", t0);
     Ok(())
 }

@@ -38,11 +38,21 @@ pub(super) fn agree<T: Boundary, G: Geom>(table: &T, g: &G, o: DVec2, v: DVec2) 
 
 /// Random rays from inside and from the walls, plus the given special ones.
 pub(super) fn check<T: Boundary, G: Geom>(table: &T, g: &G, special: &[(DVec2, DVec2)]) {
+    check_n(table, g, special, 20_000);
+}
+
+/// [`check`] with `n` random rays.
+pub(super) fn check_n<T: Boundary, G: Geom>(
+    table: &T,
+    g: &G,
+    special: &[(DVec2, DVec2)],
+    n: usize,
+) {
     for &(o, v) in special {
         agree(table, g, o, v);
     }
     let mut rng = Pcg64::seed_from_u64(11);
-    for _ in 0..20_000 {
+    for _ in 0..n {
         let o = table.sample_interior(&mut rng, 1.0);
         let v = DVec2::from_angle(rng.random::<f64>() * std::f64::consts::TAU)
             * (0.1 + rng.random::<f64>());

@@ -3,7 +3,7 @@
 //! A kernel needs the table's answer to [`Boundary::cast`] for `N` balls at
 //! once, without a branch per ball. Each table here computes every candidate
 //! wall for every lane (the flat crossing *and* the cap, the box *and* the
-//! disk) and keeps the right one
+//! disk, every wall of a table built from segments) and keeps the right one
 //! with compare-and-select. The arithmetic is the scalar cast's, operation
 //! for operation (same divisions, same square roots, same clamps, same tie
 //! rules), so a lane finds bitwise the hit that [`Boundary::cast`] finds.
@@ -11,8 +11,8 @@
 //! time becomes NaN, which then sticks to that lane's state and is reported
 //! as an error at the end of the run.
 //!
-//! One file per table ([`circle`], [`rectangle`], [`stadium`], [`sinai`]),
-//! the circle arithmetic they share in [`round`], and the
+//! One file per table ([`circle`], [`rectangle`], [`stadium`], [`sinai`],
+//! [`segments`]), the circle arithmetic they share in [`round`], and the
 //! test harness that holds each of them to its scalar cast in `agree`.
 //!
 //! [`Boundary::cast`]: spinball_geometry::Boundary::cast
@@ -20,6 +20,7 @@
 mod circle;
 mod rectangle;
 mod round;
+mod segments;
 mod sinai;
 mod stadium;
 
@@ -28,6 +29,7 @@ mod agree;
 
 pub(crate) use circle::LaneCircle;
 pub(crate) use rectangle::LaneRectangle;
+pub(crate) use segments::LaneSegments;
 pub(crate) use sinai::LaneSinai;
 pub(crate) use stadium::LaneStadium;
 

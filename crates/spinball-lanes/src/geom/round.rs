@@ -37,6 +37,21 @@ impl<L: Lanes> Ray<L> {
             inv_a: L::splat(1.0) / a,
         }
     }
+
+    /// A ray for tables without round walls: `|v|²` and `1/|v|²` are left
+    /// at 0, unused.
+    #[inline(always)]
+    pub fn flat(x: L, y: L, vx: L, vy: L) -> Self {
+        let zero = L::splat(0.0);
+        Ray {
+            x,
+            y,
+            vx,
+            vy,
+            a: zero,
+            inv_a: zero,
+        }
+    }
 }
 
 /// Where a ball meets a circle: the scalar cast's answer before it is
