@@ -9,7 +9,14 @@
 //! ```
 //!
 //! The defaults are the issue's benchmark: stadium `a = 1`, α = 0.5, 4000
-//! initial conditions × 20000 collisions on 2 threads. Each line prints the
+//! initial conditions × 20000 collisions on 2 threads.
+//!
+//! `--table` takes a built-in table's spec (`stadium:a=1`, `sinai:L=2,R=1`,
+//! ...) or one of these tables built from segments (`SegmentTable`):
+//! `segments:stadium` (the stadium `a = 1`: two lines and two half-circle
+//! arcs), `segments:sinai` (the Sinai table `L = 2, R = 1`: four lines and a
+//! circular hole), `segments:mushroom` (the mushroom of the `SegmentTable`
+//! docs) and `segments:gon20` (a non-convex 20-gon, no two walls parallel). Each line prints the
 //! median over `--repeat` runs of the wall time per initial condition and
 //! collision (the whole run: all threads together) and of the CPU time per
 //! IC-step (summed over threads: the cost per core, which stays meaningful
@@ -18,14 +25,76 @@
 use std::time::Instant;
 
 use spinball_core::{Sampler, SpinLaw, State, TangentVector, ic_rng, random_direction};
-use spinball_geometry::Table;
+use spinball_geometry::{
+    ArcSegment, Boundary, DVec2, LineSegment, Segment, SegmentTable, Table, TableVisitor,
+};
 use spinball_lanes::{Isa, LaneBilliard};
+
+/// The table to run: a built-in one or one built from segments.
+enum Subject {
+    Builtin(Table),
+    Segments(SegmentTable),
+}
+
+impl Subject {
+    fn parse(spec: &str) -> Result<Subject, Box<dyn std::error::Error>> {
+        use std::f64::consts::{FRAC_PI_2, PI, TAU};
+        let p = DVec2::new;
+        let line = |a, b| LineSegment::new(a, b).map(Segment::Line);
+        let arc = |c, r, start, sweep| ArcSegment::new(c, r, start, sweep).map(Segment::Arc);
+        let table = match spec {
+            "segments:stadium" => SegmentTable::new(vec![
+                line(p(-1.0, -1.0), p(1.0, -1.0))?,
+                arc(p(1.0, 0.0), 1.0, -FRAC_PI_2, PI)?,
+                line(p(1.0, 1.0), p(-1.0, 1.0))?,
+                arc(p(-1.0, 0.0), 1.0, FRAC_PI_2, PI)?,
+            ])?,
+            "segments:sinai" => SegmentTable::with_holes(
+                vec![
+                    line(p(-2.0, -2.0), p(2.0, -2.0))?,
+                    line(p(2.0, -2.0), p(2.0, 2.0))?,
+                    line(p(2.0, 2.0), p(-2.0, 2.0))?,
+                    line(p(-2.0, 2.0), p(-2.0, -2.0))?,
+                ],
+                vec![vec![arc(DVec2::ZERO, 1.0, 0.0, -TAU)?]],
+            )?,
+            "segments:mushroom" => {
+                let (r, w, h) = (1.0, 0.3, 1.0);
+                SegmentTable::new(vec![
+                    line(p(-w, -h), p(w, -h))?,
+                    line(p(w, -h), p(w, 0.0))?,
+                    line(p(w, 0.0), p(r, 0.0))?,
+                    arc(DVec2::ZERO, r, 0.0, PI)?,
+                    line(p(-r, 0.0), p(-w, 0.0))?,
+                    line(p(-w, 0.0), p(-w, -h))?,
+                ])?
+            }
+            "segments:gon20" => {
+                // Star-shaped, radii alternating about 1 and 0.8: no two
+                // walls parallel, so none is cast as a pair.
+                let v: Vec<DVec2> = (0..20)
+                    .map(|k| {
+                        let radius = if k % 2 == 0 {
+                            1.0
+                        } else {
+                            0.8 + 0.01 * k as f64
+                        };
+                        DVec2::from_angle(TAU * k as f64 / 20.0) * radius
+                    })
+                    .collect();
+                SegmentTable::polygon(&v)?
+            }
+            other => return Ok(Subject::Builtin(other.parse()?)),
+        };
+        Ok(Subject::Segments(table))
+    }
+}
 
 struct Args {
     ics: u64,
     collisions: u64,
     threads: usize,
-    table: Table,
+    table: String,
     alpha: f64,
     isas: Vec<Isa>,
     kernels: Vec<String>,
@@ -38,7 +107,7 @@ fn parse() -> Result<Args, Box<dyn std::error::Error>> {
         ics: 4000,
         collisions: 20_000,
         threads: 2,
-        table: "stadium:a=1".parse()?,
+        table: "stadium:a=1".to_string(),
         alpha: 0.5,
         isas: Isa::available(),
         kernels: ["plain", "fd", "tangent", "spectrum"]
@@ -58,7 +127,7 @@ fn parse() -> Result<Args, Box<dyn std::error::Error>> {
             "--ics" => a.ics = value.parse()?,
             "--collisions" => a.collisions = value.parse()?,
             "--threads" => a.threads = value.parse()?,
-            "--table" => a.table = value.parse()?,
+            "--table" => a.table = value,
             "--alpha" => a.alpha = value.parse()?,
             "--repeat" => a.repeat = value.parse()?,
             "--isa" if value != "all" => a.isas = vec![value.parse::<Isa>()?.checked()?],
@@ -89,14 +158,37 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
+type Outcome = Result<(), Box<dyn std::error::Error>>;
+
+fn main() -> Outcome {
     let a = parse()?;
+    match Subject::parse(&a.table)? {
+        // The concrete built-in table, so the scalar path runs with static
+        // dispatch as the ensembles do.
+        Subject::Builtin(table) => table.visit(Bench { a: &a }),
+        Subject::Segments(table) => bench(&a, &table),
+    }
+}
+
+/// [`bench`] with the concrete built-in table.
+struct Bench<'a> {
+    a: &'a Args,
+}
+
+impl TableVisitor for Bench<'_> {
+    type Output = Outcome;
+    fn visit<B: Boundary + Clone + Send + Sync>(self, table: &B) -> Outcome {
+        bench(self.a, table)
+    }
+}
+
+fn bench<B: Boundary + Clone + Sync>(a: &Args, table: &B) -> Outcome {
     let law = SpinLaw::extended(a.alpha)?;
     let mut starts: Vec<State> = Vec::new();
     let mut dirs: Vec<TangentVector> = Vec::new();
     for i in 0..a.ics {
         let mut rng = ic_rng(1, i);
-        starts.push(Sampler::Paper.sample(&a.table, &law, &mut rng));
+        starts.push(Sampler::Paper.sample(table, &law, &mut rng));
         dirs.push(random_direction(&mut rng));
     }
     let frames: Vec<[TangentVector; 5]> = (0..a.ics as usize)
@@ -114,7 +206,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         a.table, a.alpha, a.ics, a.collisions, a.threads, a.repeat
     );
     for isa in &a.isas {
-        let lanes = LaneBilliard::new(a.table, law)?
+        let lanes = LaneBilliard::new(table.clone(), law)?
             .with_isa(*isa)?
             .with_threads(a.threads)?;
         for k in &a.kernels {
@@ -178,117 +270,113 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
     }
     if a.scalar {
-        scalar(&a, &law, &starts, &dirs)?;
+        scalar(a, table, &law, &starts, &dirs)?;
     }
     Ok(())
 }
 
-/// The scalar path on one thread, over a tenth of the initial conditions:
-/// the specification the lanes are tested against, and the speed they
-/// replace. `Billiard::step` for the plain map; the finite-difference,
-/// tangent and spectrum loops are those of `spinball-analysis`'s
-/// `largest_lyapunov` and `lyapunov_spectrum`, written out here with
-/// `spinball-core` (this crate sits below `spinball-analysis`).
-fn scalar(
+/// The scalar path on one thread, over a tenth of the initial conditions,
+/// for the kernels asked for (median of `--repeat` runs): the
+/// specification the lanes are tested against, and the speed they replace.
+/// `Billiard::step` for the plain map; the finite-difference, tangent and
+/// spectrum loops are those of `spinball-analysis`'s `largest_lyapunov` and
+/// `lyapunov_spectrum`, written out here with `spinball-core` (this crate
+/// sits below `spinball-analysis`).
+fn scalar<B: Boundary + Clone>(
     a: &Args,
+    table: &B,
     law: &SpinLaw,
     starts: &[State],
     dirs: &[TangentVector],
-) -> Result<(), Box<dyn std::error::Error>> {
+) -> Outcome {
     use spinball_core::{Ball, Billiard};
-    let Table::Stadium(stadium) = a.table else {
-        return Err("--scalar is implemented for the stadium".into());
-    };
-    let billiard = Billiard::new(stadium, *law);
+    let billiard = Billiard::new(table.clone(), *law);
     let n = (starts.len() / 10).max(1);
     let steps = n as f64 * a.collisions as f64;
-    let report = |name: &str, (t0, c0): (Instant, Option<f64>), check: f64| {
-        let cpu = match (c0, cpu_seconds()) {
-            (Some(c0), Some(c1)) => (c1 - c0) / steps * 1e9,
-            _ => f64::NAN,
-        };
-        println!(
-            "scalar    {name:<9} wall {:8.3} ns/IC-step  cpu {cpu:8.3} ns/IC-step  (1 thread)  (check {check:.6})",
-            t0.elapsed().as_secs_f64() / steps * 1e9
-        );
+    let offset = |z: &State, d: TangentVector| {
+        let (z, d) = (z.to_array(), d.to_array());
+        State::from_array(std::array::from_fn(|i| z[i] + d[i]))
     };
-    let start = || (Instant::now(), cpu_seconds());
-
-    let t0 = start();
-    let mut time = 0.0;
-    for s in starts.iter().take(n) {
-        let mut ball = billiard.launch(*s)?;
-        for _ in 0..a.collisions {
-            time += billiard.step(&mut ball)?.time();
-        }
-    }
-    report("plain", t0, time);
-
-    let t0 = start();
-    let mut sum = 0.0;
-    for (s, dir) in starts.iter().zip(dirs).take(n) {
-        const DELTA0: f64 = 1e-7;
-        let offset = |z: &State, d: TangentVector| {
-            let (z, d) = (z.to_array(), d.to_array());
-            State::from_array(std::array::from_fn(|i| z[i] + d[i]))
-        };
-        let mut ball = billiard.launch(*s)?;
-        let mut shadow = Ball::new(offset(s, *dir * DELTA0), law)?;
-        let (mut logs, mut time) = (LogSum::default(), 0.0);
-        for _ in 0..a.collisions {
-            time += billiard.step(&mut ball)?.time();
-            billiard.step(&mut shadow)?;
-            let (p, q) = (ball.state().to_array(), shadow.state().to_array());
-            let d = TangentVector::from_array(std::array::from_fn(|i| q[i] - p[i]));
-            let dist = d.norm();
-            logs.push(dist / DELTA0);
-            shadow = Ball::new(offset(ball.state(), d * (DELTA0 / dist)), law)?;
-        }
-        sum += logs.total() / time;
-    }
-    report("fd", t0, sum / n as f64);
-
-    let t0 = start();
-    let mut sum = 0.0;
-    for (s, dir) in starts.iter().zip(dirs).take(n) {
-        let mut ball = billiard.launch(*s)?;
-        let mut v = [*dir];
-        let (mut logs, mut time) = (LogSum::default(), 0.0);
-        for _ in 0..a.collisions {
-            time += billiard.step_tangent(&mut ball, &mut v)?.time();
-            let norm = v[0].norm();
-            logs.push(norm);
-            v[0] = v[0] * (1.0 / norm);
-        }
-        sum += logs.total() / time;
-    }
-    report("tangent", t0, sum / n as f64);
-
-    let t0 = start();
-    let mut sum = 0.0;
-    for s in starts.iter().take(n) {
-        let mut ball = billiard.launch(*s)?;
-        let mut v: [TangentVector; 5] = std::array::from_fn(|j| {
-            let mut z = [0.0; 5];
-            z[j] = 1.0;
-            TangentVector::from_array(z)
-        });
-        let (mut logs, mut time) = ([LogSum::default(); 5], 0.0);
-        for _ in 0..a.collisions {
-            time += billiard.step_tangent(&mut ball, &mut v)?.time();
-            for i in 0..5 {
-                for j in 0..i {
-                    let p = v[i].dot(&v[j]);
-                    v[i] = v[i] - v[j] * p;
+    for k in &a.kernels {
+        let mut times = Vec::new();
+        let mut cpu = Vec::new();
+        for _ in 0..a.repeat {
+            let c0 = cpu_seconds();
+            let t0 = Instant::now();
+            for (s, dir) in starts.iter().zip(dirs).take(n) {
+                let mut ball = billiard.launch(*s)?;
+                match k.as_str() {
+                    "plain" => {
+                        for _ in 0..a.collisions {
+                            billiard.step(&mut ball)?;
+                        }
+                    }
+                    "fd" => {
+                        const DELTA0: f64 = 1e-7;
+                        let mut shadow = Ball::new(offset(s, *dir * DELTA0), law)?;
+                        let mut logs = LogSum::default();
+                        for _ in 0..a.collisions {
+                            billiard.step(&mut ball)?;
+                            billiard.step(&mut shadow)?;
+                            let (p, q) = (ball.state().to_array(), shadow.state().to_array());
+                            let d = TangentVector::from_array(std::array::from_fn(|i| q[i] - p[i]));
+                            let dist = d.norm();
+                            logs.push(dist / DELTA0);
+                            shadow = Ball::new(offset(ball.state(), d * (DELTA0 / dist)), law)?;
+                        }
+                        std::hint::black_box(logs.total());
+                    }
+                    "tangent" => {
+                        let mut v = [*dir];
+                        let mut logs = LogSum::default();
+                        for _ in 0..a.collisions {
+                            billiard.step_tangent(&mut ball, &mut v)?;
+                            let norm = v[0].norm();
+                            logs.push(norm);
+                            v[0] = v[0] * (1.0 / norm);
+                        }
+                        std::hint::black_box(logs.total());
+                    }
+                    "spectrum" => {
+                        let mut v: [TangentVector; 5] = std::array::from_fn(|j| {
+                            let mut z = [0.0; 5];
+                            z[j] = 1.0;
+                            TangentVector::from_array(z)
+                        });
+                        let mut logs = [LogSum::default(); 5];
+                        for _ in 0..a.collisions {
+                            billiard.step_tangent(&mut ball, &mut v)?;
+                            for i in 0..5 {
+                                for j in 0..i {
+                                    let p = v[i].dot(&v[j]);
+                                    v[i] = v[i] - v[j] * p;
+                                }
+                                let norm = v[i].norm();
+                                v[i] = v[i] * (1.0 / norm);
+                                logs[i].push(norm);
+                            }
+                        }
+                        std::hint::black_box(logs[0].total());
+                    }
+                    other => return Err(format!("unknown kernel {other}").into()),
                 }
-                let norm = v[i].norm();
-                v[i] = v[i] * (1.0 / norm);
-                logs[i].push(norm);
+            }
+            times.push(t0.elapsed().as_secs_f64());
+            if let (Some(c0), Some(c1)) = (c0, cpu_seconds()) {
+                cpu.push(c1 - c0);
             }
         }
-        sum += logs[0].total() / time;
+        let c = if cpu.is_empty() {
+            f64::NAN
+        } else {
+            median(cpu)
+        };
+        println!(
+            "scalar    {k:<9} wall {:8.3} ns/IC-step  cpu {:8.3} ns/IC-step  (1 thread)",
+            median(times) / steps * 1e9,
+            c / steps * 1e9
+        );
     }
-    report("spectrum", t0, sum / n as f64);
     Ok(())
 }
 

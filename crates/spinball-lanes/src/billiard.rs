@@ -9,12 +9,12 @@
 //! its initial condition.
 
 use spinball_core::{Billiard, MAX_QR_INTERVAL, SpinLaw, State, TangentVector};
-use spinball_geometry::{Boundary, Shape, Table};
+use spinball_geometry::{Boundary, SegmentTable, Shape, Table};
 
 use crate::dispatch::Dispatch;
 use crate::dynamics::Law;
 use crate::error::LanesError;
-use crate::geom::{Geom, LaneCircle, LaneRectangle, LaneSinai, LaneStadium};
+use crate::geom::{Geom, LaneCircle, LaneRectangle, LaneSegments, LaneSinai, LaneStadium};
 use crate::isa::Isa;
 use crate::kernels::{self, Kernel};
 use crate::outcome::{Flight, SpectrumStretch, Stretch};
@@ -71,6 +71,9 @@ pub struct LaneBilliard<B = Table> {
 #[derive(Debug, Clone, PartialEq)]
 struct Runner {
     shape: Shape,
+    /// The walls of a [`Shape::Segments`] compiled for the kernels (once,
+    /// here, rather than on every run).
+    segments: Option<LaneSegments>,
     law: SpinLaw,
     isa: Isa,
     threads: usize,
@@ -92,10 +95,20 @@ impl<B: Boundary> LaneBilliard<B> {
     /// the scalar path).
     pub fn new(table: B, law: SpinLaw) -> Result<Self, LanesError> {
         let shape = table.shape().ok_or(LanesError::NoLaneForm)?;
+        let segments = match &shape {
+            // The walls of a `SegmentTable` make a valid one again; loops
+            // that do not (a hand-made shape) have no lane form.
+            Shape::Segments { outer, holes } => Some(LaneSegments::new(
+                &SegmentTable::with_holes(outer.clone(), holes.clone())
+                    .map_err(|_| LanesError::NoLaneForm)?,
+            )),
+            _ => None,
+        };
         Ok(LaneBilliard {
             table,
             runner: Runner {
                 shape,
+                segments,
                 law,
                 isa: Isa::detect(),
                 threads: 1,
@@ -321,7 +334,11 @@ impl Runner {
             Shape::Rectangle { l, h } => self.split(k, &LaneRectangle::new(*l, *h), &law, ins),
             Shape::Stadium { a } => self.split(k, &LaneStadium::new(*a), &law, ins),
             Shape::Sinai { l, r } => self.split(k, &LaneSinai::new(*l, *r), &law, ins),
-            Shape::Segments { .. } => return Err(LanesError::NoLaneForm),
+            Shape::Segments { .. } => match &self.segments {
+                Some(s) if s.is_curved() => self.split(k, &s.view::<true>(), &law, ins),
+                Some(s) => self.split(k, &s.view::<false>(), &law, ins),
+                None => return Err(LanesError::NoLaneForm),
+            },
         };
         match out.iter().position(|o| !K::is_sound(o)) {
             Some(index) => Err(LanesError::NonFinite { index }),

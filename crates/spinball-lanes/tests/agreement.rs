@@ -24,11 +24,19 @@
 //! shot exactly into corners (rectangle, Sinai box) and junctions
 //! (stadium), and near-grazing rays along flat walls and past the Sinai
 //! disk; counts are not multiples of any lane count (tails).
+//!
+//! Tables built from segments (`SegmentTable`) are held to the same
+//! standard: the stadium and the Sinai table written as segments, the
+//! mushroom, an L-shaped polygon and a 20-gon, with starts into their
+//! corners, junctions and re-entrant corners and grazing their walls.
 
 use spinball_core::{
     Ball, Billiard, Pcg64, Sampler, SpinLaw, State, TangentVector, ic_rng, random_direction,
 };
-use spinball_geometry::{Boundary, Circle, DVec2, Rectangle, Sinai, Stadium, Table};
+use spinball_geometry::{
+    ArcSegment, Boundary, Circle, DVec2, LineSegment, Rectangle, Segment, SegmentTable, Sinai,
+    Stadium, Table,
+};
 use spinball_lanes::{Isa, LaneBilliard, LanesError};
 
 fn tables() -> Vec<Table> {
@@ -111,6 +119,16 @@ fn special(table: &Table) -> Vec<State> {
 /// `special(table).len()`). Returns the state, the direction, and the stream
 /// as the scalar call must see it (positioned after the state).
 fn ics(table: &Table, law: &SpinLaw, n: u64) -> Vec<(State, TangentVector, Pcg64)> {
+    draw(table, law, n, special(table))
+}
+
+/// [`ics`] for any table, with its special starts given.
+fn draw<B: Boundary>(
+    table: &B,
+    law: &SpinLaw,
+    n: u64,
+    special: Vec<State>,
+) -> Vec<(State, TangentVector, Pcg64)> {
     let mut out = Vec::new();
     for (k, sampler) in [Sampler::Paper, Sampler::Microcanonical]
         .into_iter()
@@ -124,7 +142,7 @@ fn ics(table: &Table, law: &SpinLaw, n: u64) -> Vec<(State, TangentVector, Pcg64
             out.push((start, dir, scalar_rng));
         }
     }
-    for (i, s) in special(table).into_iter().enumerate() {
+    for (i, s) in special.into_iter().enumerate() {
         let mut rng = ic_rng(7, i as u64);
         let scalar_rng = rng.clone();
         let dir = random_direction(&mut rng);
@@ -133,11 +151,11 @@ fn ics(table: &Table, law: &SpinLaw, n: u64) -> Vec<(State, TangentVector, Pcg64
     out
 }
 
-fn lanes_for(table: &Table, law: &SpinLaw) -> Vec<LaneBilliard> {
+fn lanes_for<B: Boundary + Clone>(table: &B, law: &SpinLaw) -> Vec<LaneBilliard<B>> {
     Isa::available()
         .into_iter()
         .map(|isa| {
-            LaneBilliard::new(*table, *law)
+            LaneBilliard::new(table.clone(), *law)
                 .unwrap()
                 .with_isa(isa)
                 .unwrap()
@@ -145,8 +163,13 @@ fn lanes_for(table: &Table, law: &SpinLaw) -> Vec<LaneBilliard> {
         .collect()
 }
 
-fn scalar_end(table: &Table, law: &SpinLaw, start: State, collisions: u64) -> (State, f64) {
-    let billiard = Billiard::new(*table, *law);
+fn scalar_end<B: Boundary>(
+    table: &B,
+    law: &SpinLaw,
+    start: State,
+    collisions: u64,
+) -> (State, f64) {
+    let billiard = Billiard::new(table, *law);
     let mut ball = billiard.launch(start).unwrap();
     let mut time = 0.0;
     for _ in 0..collisions {
@@ -184,79 +207,81 @@ fn special_starts_do_hit_corners_and_junctions() {
     assert_eq!(c.point(), DVec2::new(1.0, 1.0));
 }
 
-#[test]
-fn plain_trajectories_are_bitwise_the_scalar_step() {
-    const COLLISIONS: u64 = 2_000;
-    for table in tables() {
-        for law in laws() {
-            let ics = ics(&table, &law, 17);
-            let starts: Vec<State> = ics.iter().map(|x| x.0).collect();
-            let want: Vec<(State, f64)> = starts
-                .iter()
-                .map(|s| scalar_end(&table, &law, *s, COLLISIONS))
-                .collect();
-            for lanes in lanes_for(&table, &law) {
-                let got = lanes.trajectories(&starts, COLLISIONS).unwrap();
-                for (i, (g, (end, time))) in got.iter().zip(&want).enumerate() {
-                    let what = format!("{table} α={} {} ic {i}", law.alpha(), lanes.isa());
-                    assert_eq!(g.end, *end, "{what}");
-                    assert_eq!(g.time.to_bits(), time.to_bits(), "{what}");
-                    assert_eq!(g.collisions, COLLISIONS);
-                }
-            }
+/// Plain trajectories of `ics` on every instruction set: end states and
+/// times bitwise `Billiard::step`'s.
+fn assert_plain<B: Boundary + Clone>(
+    table: &B,
+    name: &str,
+    law: &SpinLaw,
+    ics: &[(State, TangentVector, Pcg64)],
+    collisions: u64,
+) {
+    let starts: Vec<State> = ics.iter().map(|x| x.0).collect();
+    let want: Vec<(State, f64)> = starts
+        .iter()
+        .map(|s| scalar_end(table, law, *s, collisions))
+        .collect();
+    for lanes in lanes_for(table, law) {
+        let got = lanes.trajectories(&starts, collisions).unwrap();
+        assert_eq!(got.len(), starts.len());
+        for (i, (g, (end, time))) in got.iter().zip(&want).enumerate() {
+            let what = format!("{name} α={} {} ic {i}", law.alpha(), lanes.isa());
+            assert_eq!(g.end, *end, "{what}");
+            assert_eq!(g.time.to_bits(), time.to_bits(), "{what}");
+            assert_eq!(g.collisions, collisions);
         }
     }
 }
 
-#[test]
-fn finite_differences_follow_the_scalar_shadow() {
-    // The scalar finite-difference method written out with
-    // `spinball-core` (as `largest_lyapunov` runs it): the reference and the
-    // shadow take their own `Billiard::step`, the separation is measured and
-    // the shadow put back `δ0` from the reference along it. The lanes' Σ ln
-    // differs only by the rounding of the product of the factors.
-    const COLLISIONS: u64 = 600;
+/// Finite differences of `ics` on every instruction set against the
+/// scalar method written out with `spinball-core` (as `largest_lyapunov`
+/// runs it): the reference and the shadow take their own `Billiard::step`,
+/// the separation is measured and the shadow put back `δ0` from the
+/// reference along it. Times and end states bitwise, `Σ ln` to `1e-12`
+/// (the lanes differ only by the rounding of the product of the factors).
+fn assert_fd<B: Boundary + Clone>(
+    table: &B,
+    name: &str,
+    law: &SpinLaw,
+    ics: &[(State, TangentVector, Pcg64)],
+    collisions: u64,
+) {
     const DELTA0: f64 = 1e-7;
-    for table in tables() {
-        for law in laws() {
-            let ics = ics(&table, &law, 9);
-            let starts: Vec<State> = ics.iter().map(|x| x.0).collect();
-            let dirs: Vec<TangentVector> = ics.iter().map(|x| x.1).collect();
-            let billiard = Billiard::new(table, law);
-            let offset = |z: &State, d: TangentVector| {
-                let (z, d) = (z.to_array(), d.to_array());
-                State::from_array(std::array::from_fn(|i| z[i] + d[i]))
-            };
-            let want: Vec<(f64, f64, State)> = ics
-                .iter()
-                .map(|(s, dir, _)| {
-                    let mut ball = billiard.launch(*s).unwrap();
-                    let mut shadow = Ball::new(offset(s, *dir * DELTA0), &law).unwrap();
-                    let (mut log, mut time) = (0.0, 0.0);
-                    for _ in 0..COLLISIONS {
-                        time += billiard.step(&mut ball).unwrap().time();
-                        billiard.step(&mut shadow).unwrap();
-                        let (a, b) = (ball.state().to_array(), shadow.state().to_array());
-                        let d = TangentVector::from_array(std::array::from_fn(|i| b[i] - a[i]));
-                        let dist = d.norm();
-                        log += (dist / DELTA0).ln();
-                        shadow =
-                            Ball::new(offset(ball.state(), d * (DELTA0 / dist)), &law).unwrap();
-                    }
-                    (log, time, *ball.state())
-                })
-                .collect();
-            for lanes in lanes_for(&table, &law) {
-                let got = lanes
-                    .lyapunov_fd(&starts, &dirs, DELTA0, COLLISIONS)
-                    .unwrap();
-                for (i, (g, (log, time, end))) in got.iter().zip(&want).enumerate() {
-                    let what = format!("{table} α={} {} ic {i}", law.alpha(), lanes.isa());
-                    assert_eq!(g.time.to_bits(), time.to_bits(), "time {what}");
-                    assert_eq!(g.end, *end, "{what}");
-                    close(g.log_stretch, *log, 1e-12, &what);
-                }
+    let starts: Vec<State> = ics.iter().map(|x| x.0).collect();
+    let dirs: Vec<TangentVector> = ics.iter().map(|x| x.1).collect();
+    let billiard = Billiard::new(table, *law);
+    let offset = |z: &State, d: TangentVector| {
+        let (z, d) = (z.to_array(), d.to_array());
+        State::from_array(std::array::from_fn(|i| z[i] + d[i]))
+    };
+    let want: Vec<(f64, f64, State)> = ics
+        .iter()
+        .map(|(s, dir, _)| {
+            let mut ball = billiard.launch(*s).unwrap();
+            let mut shadow = Ball::new(offset(s, *dir * DELTA0), law).unwrap();
+            let (mut log, mut time) = (0.0, 0.0);
+            for _ in 0..collisions {
+                time += billiard.step(&mut ball).unwrap().time();
+                billiard.step(&mut shadow).unwrap();
+                let (a, b) = (ball.state().to_array(), shadow.state().to_array());
+                let d = TangentVector::from_array(std::array::from_fn(|i| b[i] - a[i]));
+                let dist = d.norm();
+                log += (dist / DELTA0).ln();
+                shadow = Ball::new(offset(ball.state(), d * (DELTA0 / dist)), law).unwrap();
             }
+            (log, time, *ball.state())
+        })
+        .collect();
+    for lanes in lanes_for(table, law) {
+        let got = lanes
+            .lyapunov_fd(&starts, &dirs, DELTA0, collisions)
+            .unwrap();
+        assert_eq!(got.len(), starts.len());
+        for (i, (g, (log, time, end))) in got.iter().zip(&want).enumerate() {
+            let what = format!("{name} α={} {} ic {i}", law.alpha(), lanes.isa());
+            assert_eq!(g.time.to_bits(), time.to_bits(), "time {what}");
+            assert_eq!(g.end, *end, "{what}");
+            close(g.log_stretch, *log, 1e-12, &what);
         }
     }
 }
@@ -269,45 +294,129 @@ fn pow2_rescale(v: TangentVector) -> (TangentVector, i64) {
     (v * f64::from_bits(((1023 - e) as u64) << 52), e)
 }
 
+/// Exact tangent dynamics of `ics` on every instruction set against
+/// `Billiard::step_tangent` with the vector rescaled by exact powers of two
+/// rather than normalised: the tangent map is linear and a power of two
+/// scales every rounding exactly, so the lanes' vector is the scalar's times
+/// a power of two, bit for bit, and `Σ ln` differs only by the rounding of
+/// the final `ln` — even for grazing starts, whose collisions amplify any
+/// difference by `~1/(n·v)`. Times bitwise, `Σ ln` to `1e-12`.
+fn assert_tangent<B: Boundary + Clone>(
+    table: &B,
+    name: &str,
+    law: &SpinLaw,
+    ics: &[(State, TangentVector, Pcg64)],
+    collisions: u64,
+) {
+    let starts: Vec<State> = ics.iter().map(|x| x.0).collect();
+    let dirs: Vec<TangentVector> = ics.iter().map(|x| x.1).collect();
+    let billiard = Billiard::new(table, *law);
+    let want: Vec<(f64, f64)> = ics
+        .iter()
+        .map(|(s, dir, _)| {
+            let mut ball = billiard.launch(*s).unwrap();
+            let mut v = [*dir];
+            let (mut powers, mut time) = (0i64, 0.0);
+            for _ in 0..collisions {
+                time += billiard.step_tangent(&mut ball, &mut v).unwrap().time();
+                let (w, e) = pow2_rescale(v[0]);
+                v[0] = w;
+                powers += e;
+            }
+            let log = v[0].norm().ln() + powers as f64 * std::f64::consts::LN_2;
+            (log, time)
+        })
+        .collect();
+    for lanes in lanes_for(table, law) {
+        let got = lanes.lyapunov_tangent(&starts, &dirs, collisions).unwrap();
+        assert_eq!(got.len(), starts.len());
+        for (i, (g, (log, time))) in got.iter().zip(&want).enumerate() {
+            let what = format!("{name} α={} {} ic {i}", law.alpha(), lanes.isa());
+            assert_eq!(g.time.to_bits(), time.to_bits(), "time {what}");
+            close(g.log_stretch, *log, 1e-12, &what);
+        }
+    }
+}
+
+/// The spectrum of `ics` on every instruction set against five vectors
+/// through `Billiard::step_tangent` with modified Gram–Schmidt every `qr`
+/// collisions and after the last (as `lyapunov_spectrum`): times bitwise,
+/// every `Σ ln R_ii` to `1e-10` (rounding of its products and sums).
+fn assert_spectrum<B: Boundary + Clone>(
+    table: &B,
+    name: &str,
+    law: &SpinLaw,
+    ics: &[(State, TangentVector, Pcg64)],
+    collisions: u64,
+    qr: u32,
+) {
+    let starts: Vec<State> = ics.iter().map(|x| x.0).collect();
+    let frames: Vec<[TangentVector; 5]> =
+        ics.iter().map(|x| frame_from(&mut x.2.clone())).collect();
+    let billiard = Billiard::new(table, *law);
+    let want: Vec<([f64; 5], f64)> = starts
+        .iter()
+        .zip(&frames)
+        .map(|(s, frame)| {
+            let mut ball = billiard.launch(*s).unwrap();
+            let mut v = *frame;
+            let (mut logs, mut time) = ([0.0; 5], 0.0);
+            for n in 1..=collisions {
+                time += billiard.step_tangent(&mut ball, &mut v).unwrap().time();
+                if n % u64::from(qr) == 0 || n == collisions {
+                    for i in 0..5 {
+                        for j in 0..i {
+                            let p = v[i].dot(&v[j]);
+                            v[i] = v[i] - v[j] * p;
+                        }
+                        let norm = v[i].norm();
+                        v[i] = v[i] * (1.0 / norm);
+                        logs[i] += norm.ln();
+                    }
+                }
+            }
+            (logs, time)
+        })
+        .collect();
+    for lanes in lanes_for(table, law) {
+        let got = lanes.spectrum(&starts, &frames, collisions, qr).unwrap();
+        assert_eq!(got.len(), starts.len());
+        for (i, (g, (logs, time))) in got.iter().zip(&want).enumerate() {
+            let what = format!("{name} α={} qr {qr} {} ic {i}", law.alpha(), lanes.isa());
+            assert_eq!(g.time.to_bits(), time.to_bits(), "time {what}");
+            for (a, b) in g.log_stretch.iter().zip(logs) {
+                close(*a, *b, 1e-10, &what);
+            }
+        }
+    }
+}
+
 #[test]
-fn exact_tangent_follows_the_scalar_tangent_map() {
-    // `Billiard::step_tangent`, with the vector rescaled by exact powers of
-    // two rather than normalised: the tangent map is linear and a power of
-    // two scales every rounding exactly, so the lanes' vector is the
-    // scalar's times a power of two, bit for bit, and Σ ln differs only by
-    // the rounding of the final `ln` — even for the grazing starts, whose
-    // collisions amplify any difference by `~1/(n·v)`.
-    const COLLISIONS: u64 = 600;
+fn plain_trajectories_are_bitwise_the_scalar_step() {
+    for table in tables() {
+        for law in laws() {
+            let ics = ics(&table, &law, 17);
+            assert_plain(&table, &table.to_string(), &law, &ics, 2_000);
+        }
+    }
+}
+
+#[test]
+fn finite_differences_follow_the_scalar_shadow() {
     for table in tables() {
         for law in laws() {
             let ics = ics(&table, &law, 9);
-            let starts: Vec<State> = ics.iter().map(|x| x.0).collect();
-            let dirs: Vec<TangentVector> = ics.iter().map(|x| x.1).collect();
-            let billiard = Billiard::new(table, law);
-            let want: Vec<(f64, f64)> = ics
-                .iter()
-                .map(|(s, dir, _)| {
-                    let mut ball = billiard.launch(*s).unwrap();
-                    let mut v = [*dir];
-                    let (mut powers, mut time) = (0i64, 0.0);
-                    for _ in 0..COLLISIONS {
-                        time += billiard.step_tangent(&mut ball, &mut v).unwrap().time();
-                        let (w, e) = pow2_rescale(v[0]);
-                        v[0] = w;
-                        powers += e;
-                    }
-                    let log = v[0].norm().ln() + powers as f64 * std::f64::consts::LN_2;
-                    (log, time)
-                })
-                .collect();
-            for lanes in lanes_for(&table, &law) {
-                let got = lanes.lyapunov_tangent(&starts, &dirs, COLLISIONS).unwrap();
-                for (i, (g, (log, time))) in got.iter().zip(&want).enumerate() {
-                    let what = format!("{table} α={} {} ic {i}", law.alpha(), lanes.isa());
-                    assert_eq!(g.time.to_bits(), time.to_bits(), "time {what}");
-                    close(g.log_stretch, *log, 1e-12, &what);
-                }
-            }
+            assert_fd(&table, &table.to_string(), &law, &ics, 600);
+        }
+    }
+}
+
+#[test]
+fn exact_tangent_follows_the_scalar_tangent_map() {
+    for table in tables() {
+        for law in laws() {
+            let ics = ics(&table, &law, 9);
+            assert_tangent(&table, &table.to_string(), &law, &ics, 600);
         }
     }
 }
@@ -331,53 +440,11 @@ fn frame_from(rng: &mut Pcg64) -> [TangentVector; 5] {
 
 #[test]
 fn spectrum_follows_the_scalar_tangent_map_and_gram_schmidt() {
-    // Five vectors through `Billiard::step_tangent`, modified Gram–Schmidt
-    // every `qr` collisions and after the last (as `lyapunov_spectrum`);
-    // Σ ln R_ii differs only by the rounding of its products and sums.
-    const COLLISIONS: u64 = 400;
     for table in tables() {
         for law in laws() {
             for qr in [1u32, 5] {
                 let ics = ics(&table, &law, 4);
-                let starts: Vec<State> = ics.iter().map(|x| x.0).collect();
-                let frames: Vec<[TangentVector; 5]> =
-                    ics.iter().map(|x| frame_from(&mut x.2.clone())).collect();
-                let billiard = Billiard::new(table, law);
-                let want: Vec<([f64; 5], f64)> = starts
-                    .iter()
-                    .zip(&frames)
-                    .map(|(s, frame)| {
-                        let mut ball = billiard.launch(*s).unwrap();
-                        let mut v = *frame;
-                        let (mut logs, mut time) = ([0.0; 5], 0.0);
-                        for n in 1..=COLLISIONS {
-                            time += billiard.step_tangent(&mut ball, &mut v).unwrap().time();
-                            if n % u64::from(qr) == 0 || n == COLLISIONS {
-                                for i in 0..5 {
-                                    for j in 0..i {
-                                        let p = v[i].dot(&v[j]);
-                                        v[i] = v[i] - v[j] * p;
-                                    }
-                                    let norm = v[i].norm();
-                                    v[i] = v[i] * (1.0 / norm);
-                                    logs[i] += norm.ln();
-                                }
-                            }
-                        }
-                        (logs, time)
-                    })
-                    .collect();
-                for lanes in lanes_for(&table, &law) {
-                    let got = lanes.spectrum(&starts, &frames, COLLISIONS, qr).unwrap();
-                    for (i, (g, (logs, time))) in got.iter().zip(&want).enumerate() {
-                        let what =
-                            format!("{table} α={} qr {qr} {} ic {i}", law.alpha(), lanes.isa());
-                        assert_eq!(g.time.to_bits(), time.to_bits(), "time {what}");
-                        for (a, b) in g.log_stretch.iter().zip(logs) {
-                            close(*a, *b, 1e-10, &what);
-                        }
-                    }
-                }
+                assert_spectrum(&table, &table.to_string(), &law, &ics, 400, qr);
             }
         }
     }
@@ -537,4 +604,251 @@ fn launch_check_uses_the_table() {
             .trajectories(&[in_disk], 5),
         Err(LanesError::Launch { index: 0, .. })
     ));
+}
+
+// ------------------------------------------------------- tables of segments
+
+fn line(a: DVec2, b: DVec2) -> Segment {
+    Segment::Line(LineSegment::new(a, b).unwrap())
+}
+
+fn arc(c: DVec2, r: f64, start: f64, sweep: f64) -> Segment {
+    Segment::Arc(ArcSegment::new(c, r, start, sweep).unwrap())
+}
+
+/// A table built from segments, with a name and its special starts.
+struct Walled {
+    name: &'static str,
+    table: SegmentTable,
+    special: Vec<State>,
+}
+
+/// The stadium (a = 1) and the Sinai table (L = 2, R = 1) written as
+/// segments, the mushroom of the `SegmentTable` docs, an L-shaped polygon
+/// and a non-convex 20-gon, each with starts into its corners and junctions
+/// and grazing its walls.
+fn segment_tables() -> Vec<Walled> {
+    use std::f64::consts::{FRAC_PI_2, PI, TAU};
+    let p = DVec2::new;
+    let st = |x: f64, y: f64, vx: f64, vy: f64| State::new(p(x, y), p(vx, vy), 0.3);
+    let stadium = SegmentTable::new(vec![
+        line(p(-1.0, -1.0), p(1.0, -1.0)),
+        arc(p(1.0, 0.0), 1.0, -FRAC_PI_2, PI),
+        line(p(1.0, 1.0), p(-1.0, 1.0)),
+        arc(p(-1.0, 0.0), 1.0, FRAC_PI_2, PI),
+    ])
+    .unwrap();
+    let sinai = SegmentTable::with_holes(
+        vec![
+            line(p(-2.0, -2.0), p(2.0, -2.0)),
+            line(p(2.0, -2.0), p(2.0, 2.0)),
+            line(p(2.0, 2.0), p(-2.0, 2.0)),
+            line(p(-2.0, 2.0), p(-2.0, -2.0)),
+        ],
+        vec![vec![arc(DVec2::ZERO, 1.0, 0.0, -TAU)]],
+    )
+    .unwrap();
+    let (r, w, h) = (1.0, 0.3, 1.0);
+    let mushroom = SegmentTable::new(vec![
+        line(p(-w, -h), p(w, -h)),
+        line(p(w, -h), p(w, 0.0)),
+        line(p(w, 0.0), p(r, 0.0)),
+        arc(DVec2::ZERO, r, 0.0, PI),
+        line(p(-r, 0.0), p(-w, 0.0)),
+        line(p(-w, 0.0), p(-w, -h)),
+    ])
+    .unwrap();
+    let l_shape = SegmentTable::polygon(&[
+        p(0.0, 0.0),
+        p(2.0, 0.0),
+        p(2.0, 1.0),
+        p(1.0, 1.0),
+        p(1.0, 2.0),
+        p(0.0, 2.0),
+    ])
+    .unwrap();
+    let gon: Vec<DVec2> = (0..20)
+        .map(|k| {
+            let radius = if k % 2 == 0 {
+                1.0
+            } else {
+                0.8 + 0.01 * k as f64
+            };
+            DVec2::from_angle(TAU * k as f64 / 20.0) * radius
+        })
+        .collect();
+    let twenty = SegmentTable::polygon(&gon).unwrap();
+    // Grazing along the 20-gon's wall 3 from just inside its middle.
+    let (a, b) = (gon[3], gon[4]);
+    let inward = (b - a).perp().normalize();
+    let mid = 0.5 * (a + b) + inward * 1e-6;
+    // Grazing starts lie 1e-6 inside the wall: the finite-difference
+    // shadow, up to δ0 = 1e-7 away, must start inside the table too.
+    vec![
+        Walled {
+            name: "stadium of segments",
+            table: stadium,
+            special: vec![
+                // Into the junctions (1, 1) and (-1, -1), then grazing the
+                // flat walls into the caps.
+                st(0.0, 0.0, 0.5, 0.5),
+                st(0.0, 0.0, -0.5, -0.5),
+                st(0.0, 1.0 - 1e-6, 0.8, 1e-9),
+                st(0.0, -1.0 + 1e-6, -0.8, 1e-12),
+            ],
+        },
+        Walled {
+            name: "sinai of segments",
+            table: sinai,
+            special: vec![
+                // Box corners by exact ties, then grazing the hole.
+                st(1.5, 1.5, 0.6, 0.6),
+                st(-1.5, 1.5, -0.6, 0.6),
+                st(-1.5, 1.0 - 1e-10, 0.8, 0.0),
+                st(-1.5, 1.0 + 1e-10, 0.8, 0.0),
+                st(1.0 - 1e-12, 1.5, 0.0, -0.8),
+            ],
+        },
+        Walled {
+            name: "mushroom",
+            table: mushroom,
+            special: vec![
+                // Into the stem's top corners, along the cap's floor and
+                // along the cap, and straight up the stem.
+                st(0.0, -0.5, w, 0.5),
+                st(0.0, -0.5, -w, 0.5),
+                st(0.6, 1e-6, -0.8, -1e-13),
+                st(0.0, 1.0 - 1e-6, 0.8, 0.0),
+                st(0.0, -0.5, 0.0, 0.8),
+            ],
+        },
+        Walled {
+            name: "L-shape",
+            table: l_shape,
+            special: vec![
+                // Into the re-entrant corner (1, 1), the corners (2, 0) and
+                // (0, 0), and grazing the floor.
+                st(0.5, 0.5, 0.5, 0.5),
+                st(0.5, 0.5, 1.5, -0.5),
+                st(0.5, 0.5, -0.5, -0.5),
+                st(1.5, 1e-6, 0.8, 1e-13),
+            ],
+        },
+        Walled {
+            name: "20-gon",
+            table: twenty,
+            special: vec![
+                st(0.0, 0.0, gon[0].x, gon[0].y),
+                st(0.0, 0.0, gon[5].x, gon[5].y),
+                st(0.0, 0.0, gon[13].x, gon[13].y),
+                st(mid.x, mid.y, (b - a).x, (b - a).y),
+            ],
+        },
+    ]
+}
+
+#[test]
+fn segment_tables_special_starts_do_hit_corners_and_junctions() {
+    let law = SpinLaw::new(0.4).unwrap();
+    let tables = segment_tables();
+    // (point, wall, time) of collision `n` from the first special start.
+    let nth = |t: &Walled, n: usize| {
+        let billiard = Billiard::new(&t.table, law);
+        let mut ball = billiard.launch(t.special[0]).unwrap();
+        let mut c = billiard.step(&mut ball).unwrap();
+        for _ in 1..n {
+            c = billiard.step(&mut ball).unwrap();
+        }
+        (c.point(), c.wall(), c.time())
+    };
+    let p = DVec2::new;
+    // The stadium's junction (1, 1), the end of the right cap (wall 1).
+    assert_eq!(nth(&tables[0], 1).0, p(1.0, 1.0));
+    assert_eq!(nth(&tables[0], 1).1, 1);
+    // The Sinai box's corner: the second collision takes no time.
+    assert_eq!(nth(&tables[1], 2).2, 0.0);
+    // The mushroom's stem corner (w, 0): the end of the stem's side.
+    assert_eq!(nth(&tables[2], 1).0, p(0.3, 0.0));
+    assert_eq!(nth(&tables[2], 1).1, 1);
+    // The L's re-entrant corner: a tie of walls 2 and 3, to the lower id.
+    assert_eq!(nth(&tables[3], 1).0, p(1.0, 1.0));
+    assert_eq!(nth(&tables[3], 1).1, 2);
+}
+
+#[test]
+fn segment_tables_plain_trajectories_are_bitwise_the_scalar_step() {
+    for t in segment_tables() {
+        for law in laws() {
+            let ics = draw(&t.table, &law, 17, t.special.clone());
+            assert_plain(&t.table, t.name, &law, &ics, 2_000);
+        }
+    }
+}
+
+#[test]
+fn segment_tables_finite_differences_follow_the_scalar_shadow() {
+    for t in segment_tables() {
+        for law in laws() {
+            let ics = draw(&t.table, &law, 9, t.special.clone());
+            assert_fd(&t.table, t.name, &law, &ics, 600);
+        }
+    }
+}
+
+#[test]
+fn segment_tables_exact_tangent_follows_the_scalar_tangent_map() {
+    for t in segment_tables() {
+        for law in laws() {
+            let ics = draw(&t.table, &law, 9, t.special.clone());
+            assert_tangent(&t.table, t.name, &law, &ics, 600);
+        }
+    }
+}
+
+#[test]
+fn segment_tables_spectrum_follows_the_scalar_tangent_map() {
+    for t in segment_tables() {
+        for law in laws() {
+            for qr in [1u32, 5] {
+                let ics = draw(&t.table, &law, 4, t.special.clone());
+                assert_spectrum(&t.table, t.name, &law, &ics, 400, qr);
+            }
+        }
+    }
+}
+
+#[test]
+fn segment_tables_by_reference_on_threads_and_one_by_one_give_the_same_bits() {
+    // A borrowed table runs too; threads and one-by-one runs (all tails)
+    // give the same bits.
+    let t = &segment_tables()[2];
+    let law = SpinLaw::new(0.4).unwrap();
+    let ics = draw(&t.table, &law, 20, t.special.clone());
+    let starts: Vec<State> = ics.iter().map(|x| x.0).collect();
+    let dirs: Vec<TangentVector> = ics.iter().map(|x| x.1).collect();
+    let bits = |v: Vec<f64>| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    let run = |lanes: &LaneBilliard<&SegmentTable>, r: std::ops::Range<usize>| {
+        let mut out = Vec::new();
+        for s in lanes
+            .lyapunov_tangent(&starts[r.clone()], &dirs[r], 300)
+            .unwrap()
+        {
+            out.extend([s.log_stretch, s.time, s.end.position.x, s.end.spin]);
+        }
+        bits(out)
+    };
+    let one = LaneBilliard::new(&t.table, law).unwrap();
+    let reference = run(&one, 0..starts.len());
+    for isa in Isa::available() {
+        let lanes = LaneBilliard::new(&t.table, law)
+            .unwrap()
+            .with_isa(isa)
+            .unwrap()
+            .with_threads(3)
+            .unwrap();
+        assert_eq!(run(&lanes, 0..starts.len()), reference, "{isa}");
+    }
+    for i in 0..starts.len() {
+        assert_eq!(run(&one, i..i + 1), reference[4 * i..4 * i + 4]);
+    }
 }

@@ -1,0 +1,64 @@
+//! Tables cast in lanes: what a kernel asks of a table.
+//!
+//! A kernel needs the table's answer to [`Boundary::cast`] for `N` balls at
+//! once, without a branch per ball. Each table here computes every candidate
+//! wall for every lane (the flat crossing *and* the cap, the box *and* the
+//! disk, every wall of a table built from segments) and keeps the right one
+//! with compare-and-select. The arithmetic is the scalar cast's, operation
+//! for operation (same divisions, same square roots, same clamps, same tie
+//! rules), so a lane finds bitwise the hit that [`Boundary::cast`] finds.
+//! Where the scalar cast returns `None` (no wall ahead), the lane's flight
+//! time becomes NaN, which then sticks to that lane's state and is reported
+//! as an error at the end of the run.
+//!
+//! One file per table ([`circle`], [`rectangle`], [`stadium`], [`sinai`],
+//! [`segments`]), the circle arithmetic they share in [`round`], and the
+//! test harness that holds each of them to its scalar cast in `agree`.
+//!
+//! [`Boundary::cast`]: spinball_geometry::Boundary::cast
+
+mod circle;
+mod rectangle;
+mod round;
+mod segments;
+mod sinai;
+mod stadium;
+
+#[cfg(test)]
+mod agree;
+
+pub(crate) use circle::LaneCircle;
+pub(crate) use rectangle::LaneRectangle;
+pub(crate) use segments::LaneSegments;
+pub(crate) use sinai::LaneSinai;
+pub(crate) use stadium::LaneStadium;
+
+use crate::lanes::Lanes;
+
+/// The next wall hit of `N` balls.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LaneHit<L: Lanes> {
+    /// Flight time (NaN where the scalar cast has no hit).
+    pub time: L,
+    /// Contact point.
+    pub px: L,
+    /// Contact point.
+    pub py: L,
+    /// Unit inward normal.
+    pub nx: L,
+    /// Unit inward normal.
+    pub ny: L,
+    /// Signed curvature (`-1/R` concave, `+1/R` convex, 0 flat).
+    pub curvature: L,
+    /// Wall id, as in the scalar table (as `f64`; for diagnostics and tests).
+    pub wall: L,
+}
+
+/// A table the kernels can cast against in lanes.
+pub(crate) trait Geom: Copy + Send + Sync {
+    /// Whether the table has curved walls (the tangent map then needs its
+    /// curvature term; flat-only tables skip it).
+    const CURVED: bool;
+    /// The next wall hit from `(x, y)` along `(vx, vy)`, lane by lane.
+    fn cast<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> LaneHit<L>;
+}

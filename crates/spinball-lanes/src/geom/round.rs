@@ -1,0 +1,193 @@
+//! The circle arithmetic every table with a round wall shares.
+//!
+//! The circle table, the stadium's caps, the Sinai disk and the arcs of a
+//! table built from segments all meet a ball the way `spinball-geometry`'s
+//! `cast_concave_circle` and `cast_convex_circle` do, and snap the contact
+//! onto the circle with its private `contact`. Those three are written here
+//! once, over [`Lanes`], operation for operation as the scalar functions,
+//! so that every table's lane cast finds bitwise the scalar hit.
+
+use crate::lanes::{Lanes, MaskOps};
+
+/// A ball's position and velocity, with `|v|²` and `1/|v|²`, which do not
+/// depend on the circle: a table with several round walls computes them
+/// once per cast.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Ray<L: Lanes> {
+    pub x: L,
+    pub y: L,
+    pub vx: L,
+    pub vy: L,
+    /// `|v|²`, as the scalar `velocity.length_squared()`.
+    pub a: L,
+    /// `1 / |v|²`.
+    pub inv_a: L,
+}
+
+impl<L: Lanes> Ray<L> {
+    #[inline(always)]
+    pub fn new(x: L, y: L, vx: L, vy: L) -> Self {
+        let a = vx * vx + vy * vy;
+        Ray {
+            x,
+            y,
+            vx,
+            vy,
+            a,
+            inv_a: L::splat(1.0) / a,
+        }
+    }
+
+    /// A ray for tables without round walls: `|v|²` and `1/|v|²` are left
+    /// at 0, unused.
+    #[inline(always)]
+    pub fn flat(x: L, y: L, vx: L, vy: L) -> Self {
+        let zero = L::splat(0.0);
+        Ray {
+            x,
+            y,
+            vx,
+            vy,
+            a: zero,
+            inv_a: zero,
+        }
+    }
+}
+
+/// Where a ball meets a circle: the scalar cast's answer before it is
+/// turned into an `Option` (`ok`) and before the arc's coverage test.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Contact<L: Lanes> {
+    /// Lanes where the scalar circle cast returns `Some`.
+    pub ok: L::Mask,
+    /// Flight time (meaningful where `ok`).
+    pub time: L,
+    pub px: L,
+    pub py: L,
+    /// Unit normal pointing into the table.
+    pub nx: L,
+    pub ny: L,
+}
+
+/// Constants of a circle of radius `r` as the scalar casts use them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Round {
+    pub r: f64,
+    /// `r * r`.
+    pub r2: f64,
+    /// `1 / r`.
+    pub inv_r: f64,
+    /// `128 ε r²`: below this `c` a concave cast clamps `disc` at 0.
+    pub touch: f64,
+}
+
+impl Round {
+    pub fn new(r: f64) -> Self {
+        Round {
+            r,
+            r2: r * r,
+            inv_r: 1.0 / r,
+            touch: 128.0 * f64::EPSILON * r * r,
+        }
+    }
+}
+
+/// `contact` of `spinball-geometry`: contact point and unit radial
+/// direction for a root `r` (relative to the centre `(cx, cy)`) that lies on
+/// the circle up to rounding, by one Newton step for `1/|r|`. In the lanes of
+/// `care` where `r` is not that close to the circle (a ball found off the
+/// wall: a flight time clamped at 0) the scalar normalises exactly instead;
+/// that is computed only if such a lane exists.
+///
+/// `UNIT`: the radius is 1, so the scalar's multiplications by `1/r²`, `1/r`
+/// and `r` are multiplications by 1.0, exact, and left out.
+#[inline(always)]
+fn contact<L: Lanes, const UNIT: bool>(
+    cx: L,
+    cy: L,
+    rx: L,
+    ry: L,
+    k: &Round,
+    care: L::Mask,
+) -> (L, L, L, L) {
+    let times = |x: L, f: f64| if UNIT { x } else { x * f };
+    let rr = times(rx * rx + ry * ry, k.inv_r * k.inv_r);
+    let near = (rr - 1.0).abs().lt(L::splat(1e-8));
+    let s = times(L::splat(1.5) - rr * 0.5, k.inv_r);
+    let (mut nx, mut ny) = (rx * s, ry * s);
+    if care.and(near.not()).any() {
+        let inv = L::splat(1.0) / (rx * rx + ry * ry).sqrt();
+        nx = L::select(near, nx, rx * inv);
+        ny = L::select(near, ny, ry * inv);
+    }
+    (cx + times(nx, k.r), cy + times(ny, k.r), nx, ny)
+}
+
+/// `cast_concave_circle` of `spinball-geometry`, lane by lane (centre per
+/// lane): the ball inside the circle, leaving through it. `care`: the lanes
+/// whose result is used. `UNIT`: radius 1 (see [`contact`]); `ON_AXIS`:
+/// `cy = 0`, so `y − cy = y` exactly.
+#[inline(always)]
+pub(super) fn concave<L: Lanes, const UNIT: bool, const ON_AXIS: bool>(
+    cx: L,
+    cy: L,
+    k: &Round,
+    ray: &Ray<L>,
+    care: L::Mask,
+) -> Contact<L> {
+    let zero = L::splat(0.0);
+    let (vx, vy) = (ray.vx, ray.vy);
+    let dx = ray.x - cx;
+    let dy = if ON_AXIS { ray.y } else { ray.y - cy };
+    let a = ray.a;
+    let b = dx * vx + dy * vy;
+    let c = (dx * dx + dy * dy) - k.r2;
+    let disc = b * b - a * c;
+    // On the circle to rounding: touch at once rather than miss.
+    let disc = L::select(c.le(L::splat(k.touch)), disc.max(zero), disc);
+    let ok = disc.ge(zero).and(a.gt(zero));
+    let time = ((disc.sqrt() - b) * ray.inv_a).max(zero);
+    let (px, py, radx, rady) =
+        contact::<L, UNIT>(cx, cy, dx + vx * time, dy + vy * time, k, care.and(ok));
+    Contact {
+        ok,
+        time,
+        px,
+        py,
+        nx: -radx,
+        ny: -rady,
+    }
+}
+
+/// `cast_convex_circle` of `spinball-geometry`, lane by lane (centre per
+/// lane): the ball outside the circle, meeting it if moving towards it.
+/// `care`: the lanes whose result is used. `UNIT`: radius 1.
+#[inline(always)]
+pub(super) fn convex<L: Lanes, const UNIT: bool>(
+    cx: L,
+    cy: L,
+    k: &Round,
+    ray: &Ray<L>,
+    care: L::Mask,
+) -> Contact<L> {
+    let zero = L::splat(0.0);
+    let (vx, vy) = (ray.vx, ray.vy);
+    let dx = ray.x - cx;
+    let dy = ray.y - cy;
+    let b = dx * vx + dy * vy;
+    let a = ray.a;
+    let c = (dx * dx + dy * dy) - k.r2;
+    let disc = b * b - a * c;
+    let ok = b.lt(zero).and(disc.gt(zero));
+    let time = ((-b - disc.sqrt()) * ray.inv_a).max(zero);
+    let (px, py, radx, rady) =
+        contact::<L, UNIT>(cx, cy, dx + vx * time, dy + vy * time, k, care.and(ok));
+    Contact {
+        ok,
+        time,
+        px,
+        py,
+        nx: radx,
+        ny: rady,
+    }
+}

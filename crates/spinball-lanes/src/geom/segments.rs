@@ -1,0 +1,799 @@
+//! Tables built from segments in lanes: any [`SegmentTable`] (polygons,
+//! mushrooms, annuli, tables with holes) runs in the kernels.
+//!
+//! The scalar `SegmentTable::cast` asks every wall in id order and keeps
+//! the first of the earliest hits. Here every wall is cast for every lane,
+//! with the scalar's arithmetic (`cast_line` for a flat wall; the shared
+//! circle casts of [`round`](super::round) and `ArcSegment::covers` for an
+//! arc), and the earliest is kept by compare-and-select with the same rule
+//! (a later wall replaces the best only if strictly earlier), so a lane finds
+//! bitwise the scalar hit. The walls' constants are computed once, when the
+//! table is compiled into a [`LaneSegments`].
+//!
+//! Two flat walls whose inward normals are exact opposites (the sides of a
+//! box, of a stadium, of a mushroom's stem) can never both face a ball: `v·n`
+//! of one is minus that of the other, and only a wall with `v·n < 0` is hit.
+//! Such a pair is cast as one wall whose constants are selected lane by lane
+//! (the one facing the ball), which saves a division and most of a wall's
+//! arithmetic. The pair is cast where its later wall stands in id order, and
+//! it competes with the walls cast before it by (time, id), so ties still
+//! go to the lower id.
+//!
+//! [`SegmentTable`]: spinball_geometry::SegmentTable
+
+use std::f64::consts::TAU;
+
+use spinball_geometry::{ArcSegment, DVec2, LineSegment, Segment, SegmentTable};
+
+use super::round::{Contact, Ray, Round, concave, convex};
+use super::{Geom, LaneHit};
+use crate::lanes::{Lanes, MaskOps};
+
+/// A flat wall's constants, as `cast_line` uses them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Flat {
+    /// Wall id.
+    id: f64,
+    /// Start point.
+    sx: f64,
+    sy: f64,
+    /// Unit direction.
+    dx: f64,
+    dy: f64,
+    /// Unit inward normal.
+    nx: f64,
+    ny: f64,
+    /// Minus the normal: `v·(−n)` is `−(v·n)` exactly, the divisor of the
+    /// flight time, without a negation.
+    mnx: f64,
+    mny: f64,
+    length: f64,
+    /// `length + slack`: the reach of the wall along itself.
+    hi: f64,
+}
+
+impl Flat {
+    fn new(id: usize, l: &LineSegment, slack: f64) -> Self {
+        // `LineSegment::new`'s direction, recomputed from the public ends
+        // with the same expression; its left normal is the public normal.
+        let (start, length) = (l.start(), l.length());
+        let dir = (l.end() - start) / length;
+        let normal = l.normal();
+        debug_assert_eq!(dir.perp(), normal);
+        Flat {
+            id: id as f64,
+            sx: start.x,
+            sy: start.y,
+            dx: dir.x,
+            dy: dir.y,
+            nx: normal.x,
+            ny: normal.y,
+            mnx: -normal.x,
+            mny: -normal.y,
+            length,
+            hi: length + slack,
+        }
+    }
+
+    /// Whether `other`'s normal is exactly (in value) the opposite of this
+    /// one's, so that the two never both face a ball.
+    fn opposes(&self, other: &Flat) -> bool {
+        self.nx == -other.nx && self.ny == -other.ny
+    }
+
+    #[inline(always)]
+    fn lanes<L: Lanes>(&self) -> FlatLanes<L> {
+        FlatLanes {
+            id: L::splat(self.id),
+            sx: L::splat(self.sx),
+            sy: L::splat(self.sy),
+            dx: L::splat(self.dx),
+            dy: L::splat(self.dy),
+            nx: L::splat(self.nx),
+            ny: L::splat(self.ny),
+            length: L::splat(self.length),
+            hi: L::splat(self.hi),
+        }
+    }
+}
+
+/// A flat wall's constants per lane (the two walls of a pair differ by lane).
+#[derive(Clone, Copy, Debug)]
+struct FlatLanes<L: Lanes> {
+    id: L,
+    sx: L,
+    sy: L,
+    dx: L,
+    dy: L,
+    nx: L,
+    ny: L,
+    length: L,
+    hi: L,
+}
+
+/// How an arc meets a ball: from inside its circle or from outside, and
+/// whether its radius is 1 (then the contact's scalings by `r` and `1/r`
+/// are exact and skipped).
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Form {
+    Concave,
+    ConcaveUnit,
+    Convex,
+    ConvexUnit,
+}
+
+/// An arc's constants, as `ArcSegment::cast` and `covers` use them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Curve {
+    /// Wall id.
+    id: f64,
+    form: Form,
+    cx: f64,
+    cy: f64,
+    round: Round,
+    curvature: f64,
+    /// A full circle covers every contact.
+    full: bool,
+    /// Start point.
+    sx: f64,
+    sy: f64,
+    /// The chord from start to end, times the side of it the arc lies on.
+    chx: f64,
+    chy: f64,
+    /// `−slack · |chord|`: how far behind the chord a contact still counts.
+    reach: f64,
+}
+
+impl Curve {
+    fn new(id: usize, a: &ArcSegment, slack: f64) -> Self {
+        // `ArcSegment::new`'s private chord, side and fullness, recomputed
+        // from the public angles with the same expressions.
+        let (r, from) = (a.radius(), a.start_direction());
+        let to = DVec2::from_angle(a.start_angle() + a.sweep());
+        let mid = DVec2::from_angle(a.start_angle() + 0.5 * a.sweep());
+        let chord = (to - from) * r;
+        let side = chord.perp_dot((mid - from) * r).signum();
+        let full = a.sweep().abs() >= TAU * (1.0 - 1e-12);
+        let unit = r == 1.0;
+        let form = match (a.is_concave(), unit) {
+            (true, false) => Form::Concave,
+            (true, true) => Form::ConcaveUnit,
+            (false, false) => Form::Convex,
+            (false, true) => Form::ConvexUnit,
+        };
+        let (c, start) = (a.center(), a.start());
+        Curve {
+            id: id as f64,
+            form,
+            cx: c.x,
+            cy: c.y,
+            round: Round::new(r),
+            curvature: a.curvature(),
+            full,
+            sx: start.x,
+            sy: start.y,
+            // `side` is ±1: scaling the chord by it negates the cross
+            // product exactly.
+            chx: side * chord.x,
+            chy: side * chord.y,
+            reach: -slack * chord.length(),
+        }
+    }
+}
+
+/// One compare-and-select step of the cast.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Step {
+    /// A flat wall, in id order.
+    Flat(Flat),
+    /// Two flat walls with opposite normals (lower id first), cast where
+    /// the later one stands.
+    Pair(Flat, Flat),
+    /// An arc, in id order.
+    Arc(Curve),
+}
+
+/// A [`SegmentTable`] compiled for the kernels: every wall's constants,
+/// in the order the cast visits them. Build it once per table; the kernels
+/// cast against a [`view`](Self::view) of it.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct LaneSegments {
+    steps: Vec<Step>,
+    /// `−slack`: how far behind a flat wall, or past its ends, a ball or a
+    /// contact still counts.
+    lo: f64,
+    curved: bool,
+}
+
+impl LaneSegments {
+    pub fn new(table: &SegmentTable) -> Self {
+        let slack = table.slack();
+        let walls = table.walls();
+        let flats: Vec<Option<Flat>> = walls
+            .iter()
+            .enumerate()
+            .map(|(i, w)| match w {
+                Segment::Line(l) => Some(Flat::new(i, l, slack)),
+                Segment::Arc(_) => None,
+            })
+            .collect();
+        // Pair each flat wall with the first later unpaired one facing the
+        // other way; `partner[j] = Some(i)` for the later wall j of a pair.
+        let mut partner: Vec<Option<usize>> = vec![None; walls.len()];
+        let mut paired = vec![false; walls.len()];
+        for i in 0..walls.len() {
+            let Some(a) = flats[i].filter(|_| !paired[i]) else {
+                continue;
+            };
+            let found = (i + 1..walls.len())
+                .find(|&j| !paired[j] && flats[j].is_some_and(|b| a.opposes(&b)));
+            if let Some(j) = found {
+                paired[i] = true;
+                paired[j] = true;
+                partner[j] = Some(i);
+            }
+        }
+        let mut steps = Vec::with_capacity(walls.len());
+        for (j, w) in walls.iter().enumerate() {
+            match (w, partner[j]) {
+                (Segment::Arc(a), _) => steps.push(Step::Arc(Curve::new(j, a, slack))),
+                (Segment::Line(_), Some(i)) => {
+                    steps.push(Step::Pair(flats[i].expect("flat"), flats[j].expect("flat")));
+                }
+                // The earlier wall of a pair is cast with its partner.
+                (Segment::Line(_), None) if paired[j] => {}
+                (Segment::Line(_), None) => steps.push(Step::Flat(flats[j].expect("flat"))),
+            }
+        }
+        LaneSegments {
+            steps,
+            lo: -slack,
+            curved: walls.iter().any(|w| matches!(w, Segment::Arc(_))),
+        }
+    }
+
+    /// Whether the table has an arc.
+    pub fn is_curved(&self) -> bool {
+        self.curved
+    }
+
+    /// The table as the kernels cast against it. `CURVED` must be true if
+    /// the table has an arc (false skips the tangent map's curvature term
+    /// and the circle arithmetic).
+    pub fn view<const CURVED: bool>(&self) -> Segments<'_, CURVED> {
+        assert!(
+            CURVED || !self.curved,
+            "a table with arcs needs the curved view"
+        );
+        Segments {
+            steps: &self.steps,
+            lo: self.lo,
+        }
+    }
+}
+
+/// A borrowed [`LaneSegments`], the form the kernels take (`Copy`).
+/// `CURVED`: whether it may hold arcs.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Segments<'a, const CURVED: bool> {
+    steps: &'a [Step],
+    lo: f64,
+}
+
+/// `f64::clamp` with per-lane bounds (`lo <= hi`, neither NaN).
+#[inline(always)]
+fn clamp<L: Lanes>(x: L, lo: L, hi: L) -> L {
+    let x = L::select(x.lt(lo), lo, x);
+    L::select(x.gt(hi), hi, x)
+}
+
+/// `cast_line` of `spinball-geometry`, lane by lane, given `w = −(v·n)`:
+/// the lanes where it returns `Some`, the flight time and the contact.
+#[inline(always)]
+fn cast_flat<L: Lanes>(f: &FlatLanes<L>, w: L, lo: f64, ray: &Ray<L>) -> (L::Mask, L, L, L) {
+    let zero = L::splat(0.0);
+    let lo = L::splat(lo);
+    let relx = ray.x - f.sx;
+    let rely = ray.y - f.sy;
+    let dist = relx * f.nx + rely * f.ny;
+    let time = (dist / w).max(zero);
+    let along = (relx + ray.vx * time) * f.dx + (rely + ray.vy * time) * f.dy;
+    // Moving into the wall, not behind it (a NaN distance is not "behind"),
+    // and reaching it between its ends.
+    let ok = w
+        .gt(zero)
+        .and(dist.lt(lo).not())
+        .and(along.ge(lo))
+        .and(along.le(f.hi));
+    let along = clamp(along, zero, f.length);
+    (ok, time, f.sx + f.dx * along, f.sy + f.dy * along)
+}
+
+/// Replace the best hit by `c` in the lanes of `take`.
+#[inline(always)]
+fn keep<L: Lanes>(best: &mut LaneHit<L>, take: L::Mask, c: LaneHit<L>) {
+    best.time = L::select(take, c.time, best.time);
+    best.px = L::select(take, c.px, best.px);
+    best.py = L::select(take, c.py, best.py);
+    best.nx = L::select(take, c.nx, best.nx);
+    best.ny = L::select(take, c.ny, best.ny);
+    best.curvature = L::select(take, c.curvature, best.curvature);
+    best.wall = L::select(take, c.wall, best.wall);
+}
+
+impl<const CURVED: bool> Segments<'_, CURVED> {
+    /// An arc's candidate: the circle cast, then `ArcSegment::covers`.
+    #[inline(always)]
+    fn arc<L: Lanes>(&self, a: &Curve, ray: &Ray<L>) -> (L::Mask, LaneHit<L>) {
+        let zero = L::splat(0.0);
+        let all = zero.eq(zero);
+        let (cx, cy) = (L::splat(a.cx), L::splat(a.cy));
+        let c: Contact<L> = match a.form {
+            Form::Concave => concave::<L, false, false>(cx, cy, &a.round, ray, all),
+            Form::ConcaveUnit => concave::<L, true, false>(cx, cy, &a.round, ray, all),
+            Form::Convex => convex::<L, false>(cx, cy, &a.round, ray, all),
+            Form::ConvexUnit => convex::<L, true>(cx, cy, &a.round, ray, all),
+        };
+        let ok = if a.full {
+            c.ok
+        } else {
+            let cross = (c.py - a.sy) * a.chx - (c.px - a.sx) * a.chy;
+            c.ok.and(cross.ge(L::splat(a.reach)))
+        };
+        let hit = LaneHit {
+            time: c.time,
+            px: c.px,
+            py: c.py,
+            nx: c.nx,
+            ny: c.ny,
+            curvature: L::splat(a.curvature),
+            wall: L::splat(a.id),
+        };
+        (ok, hit)
+    }
+}
+
+impl<const CURVED: bool> Geom for Segments<'_, CURVED> {
+    const CURVED: bool = CURVED;
+
+    #[inline(always)]
+    fn cast<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> LaneHit<L> {
+        let zero = L::splat(0.0);
+        // `|v|²` and its reciprocal serve every arc; a table without arcs
+        // needs neither.
+        let ray = if CURVED {
+            Ray::new(x, y, vx, vy)
+        } else {
+            Ray::flat(x, y, vx, vy)
+        };
+        let mut best = LaneHit {
+            time: L::splat(f64::NAN),
+            px: zero,
+            py: zero,
+            nx: zero,
+            ny: zero,
+            curvature: zero,
+            wall: zero,
+        };
+        for step in self.steps {
+            match step {
+                Step::Flat(f) => {
+                    let w = vx * f.mnx + vy * f.mny;
+                    let c = f.lanes::<L>();
+                    let (ok, time, px, py) = cast_flat(&c, w, self.lo, &ray);
+                    // In id order: only a strictly earlier hit replaces
+                    // the best (and any hit replaces none, a NaN time).
+                    let take = ok.and(best.time.le(time).not());
+                    let hit = LaneHit {
+                        time,
+                        px,
+                        py,
+                        nx: c.nx,
+                        ny: c.ny,
+                        curvature: zero,
+                        wall: c.id,
+                    };
+                    keep(&mut best, take, hit);
+                }
+                Step::Pair(a, b) => {
+                    // `−(v·n)` of `a`; that of `b` is its negation, so the
+                    // wall facing the ball (if any) has divisor `|w|`.
+                    let wa = vx * a.mnx + vy * a.mny;
+                    let faces_a = wa.gt(zero);
+                    let (ca, cb) = (a.lanes::<L>(), b.lanes::<L>());
+                    let sel = |p: L, q: L| L::select(faces_a, p, q);
+                    let c = FlatLanes {
+                        id: sel(ca.id, cb.id),
+                        sx: sel(ca.sx, cb.sx),
+                        sy: sel(ca.sy, cb.sy),
+                        dx: sel(ca.dx, cb.dx),
+                        dy: sel(ca.dy, cb.dy),
+                        nx: sel(ca.nx, cb.nx),
+                        ny: sel(ca.ny, cb.ny),
+                        length: sel(ca.length, cb.length),
+                        hi: sel(ca.hi, cb.hi),
+                    };
+                    let (ok, time, px, py) = cast_flat(&c, wa.abs(), self.lo, &ray);
+                    // Out of id order: earlier, or as early with a lower id.
+                    let earlier = best
+                        .time
+                        .le(time)
+                        .not()
+                        .or(best.time.eq(time).and(c.id.lt(best.wall)));
+                    let hit = LaneHit {
+                        time,
+                        px,
+                        py,
+                        nx: c.nx,
+                        ny: c.ny,
+                        curvature: zero,
+                        wall: c.id,
+                    };
+                    keep(&mut best, ok.and(earlier), hit);
+                }
+                Step::Arc(a) => {
+                    if CURVED {
+                        let (ok, hit) = self.arc(a, &ray);
+                        let take = ok.and(best.time.le(hit.time).not());
+                        keep(&mut best, take, hit);
+                    }
+                }
+            }
+        }
+        best
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::f64::consts::{FRAC_PI_2, PI};
+
+    use rand::{Rng, SeedableRng};
+    use rand_pcg::Pcg64;
+    use spinball_geometry::{Boundary, DVec2};
+
+    use super::super::agree::{check, check_n, d};
+    use super::*;
+
+    fn line(a: DVec2, b: DVec2) -> Segment {
+        Segment::Line(LineSegment::new(a, b).unwrap())
+    }
+
+    fn arc(c: DVec2, r: f64, start: f64, sweep: f64) -> Segment {
+        Segment::Arc(ArcSegment::new(c, r, start, sweep).unwrap())
+    }
+
+    /// The stadium of half-length `a`: bottom, right cap, top, left cap.
+    fn stadium(a: f64) -> SegmentTable {
+        SegmentTable::new(vec![
+            line(d(-a, -1.0), d(a, -1.0)),
+            arc(d(a, 0.0), 1.0, -FRAC_PI_2, PI),
+            line(d(a, 1.0), d(-a, 1.0)),
+            arc(d(-a, 0.0), 1.0, FRAC_PI_2, PI),
+        ])
+        .unwrap()
+    }
+
+    /// The Sinai table: the box `[-l, l]²` and a clockwise hole of radius `r`.
+    fn sinai(l: f64, r: f64) -> SegmentTable {
+        SegmentTable::with_holes(
+            vec![
+                line(d(-l, -l), d(l, -l)),
+                line(d(l, -l), d(l, l)),
+                line(d(l, l), d(-l, l)),
+                line(d(-l, l), d(-l, -l)),
+            ],
+            vec![vec![arc(DVec2::ZERO, r, 0.0, -TAU)]],
+        )
+        .unwrap()
+    }
+
+    /// The mushroom of the `SegmentTable` docs: cap radius `r`, stem
+    /// half-width `w`, stem height `h`.
+    fn mushroom(r: f64, w: f64, h: f64) -> SegmentTable {
+        SegmentTable::new(vec![
+            line(d(-w, -h), d(w, -h)),
+            line(d(w, -h), d(w, 0.0)),
+            line(d(w, 0.0), d(r, 0.0)),
+            arc(DVec2::ZERO, r, 0.0, PI),
+            line(d(-r, 0.0), d(-w, 0.0)),
+            line(d(-w, 0.0), d(-w, -h)),
+        ])
+        .unwrap()
+    }
+
+    fn l_shape() -> SegmentTable {
+        SegmentTable::polygon(&[
+            d(0.0, 0.0),
+            d(2.0, 0.0),
+            d(2.0, 1.0),
+            d(1.0, 1.0),
+            d(1.0, 2.0),
+            d(0.0, 2.0),
+        ])
+        .unwrap()
+    }
+
+    /// A star-shaped, non-convex 20-gon with random radii (fixed seed).
+    fn twenty_gon() -> SegmentTable {
+        let mut rng = Pcg64::seed_from_u64(20);
+        let v: Vec<DVec2> = (0..20)
+            .map(|k| DVec2::from_angle(TAU * k as f64 / 20.0) * rng.random_range(0.6..1.2))
+            .collect();
+        SegmentTable::polygon(&v).unwrap()
+    }
+
+    /// The table's corners and junctions: rays into every wall end from
+    /// the reference point and from a few sampled points, and rays grazing
+    /// along every flat wall from just inside it.
+    fn junction_rays(t: &SegmentTable) -> Vec<(DVec2, DVec2)> {
+        let mut rng = Pcg64::seed_from_u64(5);
+        let mut from: Vec<DVec2> = (0..4).map(|_| t.sample_interior(&mut rng, 1.0)).collect();
+        from.push(t.reference_point());
+        let mut rays = Vec::new();
+        for w in t.walls() {
+            for o in &from {
+                rays.push((*o, w.start() - *o));
+                rays.push((*o, w.end() - *o));
+            }
+            if let Segment::Line(l) = w {
+                let along = l.end() - l.start();
+                let mid = l.start() + 0.5 * along;
+                for eps in [0.0, 1e-15, 1e-12, 1e-9] {
+                    let o = mid + l.normal() * eps * t.length_scale();
+                    rays.push((o, along));
+                    rays.push((o, -along));
+                    rays.push((o, along + l.normal() * 1e-13));
+                    rays.push((o, -along - l.normal() * 1e-13));
+                }
+                // From one end along the wall and from the start across the
+                // table.
+                rays.push((l.start(), along));
+                rays.push((l.start(), l.normal()));
+                rays.push((l.end(), l.normal() - along));
+            }
+        }
+        rays.push((from[0], DVec2::ZERO));
+        rays
+    }
+
+    /// Both views (curved and, without arcs, flat) against the scalar cast.
+    fn check_table(t: &SegmentTable, special: &[(DVec2, DVec2)]) {
+        let lanes = LaneSegments::new(t);
+        let mut rays = junction_rays(t);
+        rays.extend_from_slice(special);
+        check(t, &lanes.view::<true>(), &rays);
+        if !lanes.is_curved() {
+            check_n(t, &lanes.view::<false>(), &rays, 2_000);
+        }
+    }
+
+    #[test]
+    fn pairs_are_found_and_ids_kept() {
+        let steps = |t: &SegmentTable| LaneSegments::new(t).steps;
+        // Stadium: the flat walls 0 and 2 are a pair, cast at 2.
+        let s = steps(&stadium(1.0));
+        assert!(matches!(
+            s.as_slice(),
+            [Step::Arc(_), Step::Pair(a, b), Step::Arc(_)] if a.id == 0.0 && b.id == 2.0
+        ));
+        // Sinai: (0, 2) and (1, 3), then the hole.
+        let s = steps(&sinai(2.0, 1.0));
+        assert!(matches!(
+            s.as_slice(),
+            [Step::Pair(a, b), Step::Pair(c, e), Step::Arc(h)]
+                if (a.id, b.id, c.id, e.id, h.id) == (0.0, 2.0, 1.0, 3.0, 4.0)
+        ));
+        // Mushroom: only the stem's sides (1, 5) face opposite ways.
+        let s = steps(&mushroom(1.0, 0.3, 1.0));
+        let ids: Vec<String> = s
+            .iter()
+            .map(|st| match st {
+                Step::Flat(f) => format!("{}", f.id),
+                Step::Pair(a, b) => format!("{}+{}", a.id, b.id),
+                Step::Arc(c) => format!("arc{}", c.id),
+            })
+            .collect();
+        assert_eq!(ids, ["0", "2", "arc3", "4", "1+5"]);
+    }
+
+    #[test]
+    fn stadium_of_segments_casts_agree_including_junctions() {
+        for a in [1.0, 0.2, 4.0] {
+            check_table(
+                &stadium(a),
+                &[
+                    (d(0.0, 0.0), d(a, 1.0)),
+                    (d(0.0, 0.0), d(-a, -1.0)),
+                    (d(0.0, 0.0), d(a, -1.0)),
+                    (d(0.0, 1.0), d(1.0, 0.0)),
+                    (d(0.0, 1.0 - 1e-12), d(1.0, 1e-13)),
+                    (d(a + 1.0, 0.0), d(0.0, 1.0)),
+                    (d(a + 1.0 - 1e-12, 0.0), d(0.0, 1.0)),
+                    (d(0.0, 0.0), d(1.0, 0.0)),
+                    (d(0.0, 0.0), d(0.0, 0.0)),
+                ],
+            );
+        }
+    }
+
+    #[test]
+    fn sinai_of_segments_casts_agree_including_grazing_the_hole() {
+        for (l, r) in [(2.0, 1.0), (1.0, 0.3)] {
+            check_table(
+                &sinai(l, r),
+                &[
+                    (d(-l * 0.75, r), d(1.0, 0.0)),
+                    (d(-l * 0.75, r * (1.0 - 1e-12)), d(1.0, 0.0)),
+                    (d(-l * 0.75, r * (1.0 + 1e-12)), d(1.0, 0.0)),
+                    (d(0.0, r), d(0.0, 1.0)),
+                    (d(r, 0.0), d(0.0, 1.0)),
+                    (d(0.0, (l + r) / 2.0), d(0.0, -1.0)),
+                    (d(l * 0.75, l * 0.75), d(1.0, 1.0)),
+                    (d(-l * 0.75, l * 0.75), d(-1.0, 1.0)),
+                    (d(0.0, 0.0), d(0.0, 0.0)),
+                ],
+            );
+        }
+    }
+
+    #[test]
+    fn mushroom_casts_agree_including_the_stem_corners() {
+        let (r, w, h) = (1.0, 0.3, 1.0);
+        check_table(
+            &mushroom(r, w, h),
+            &[
+                (d(0.0, -0.5), d(0.0, 1.0)),
+                // Into the re-entrant corners where the stem meets the cap's
+                // floor, and along that floor.
+                (d(0.0, -0.5), d(w, 0.5)),
+                (d(0.0, -0.5), d(-w, 0.5)),
+                (d(0.5, 0.0), d(-1.0, 0.0)),
+                (d(0.5, 1e-12), d(-1.0, -1e-13)),
+                (d(w, -0.5), d(0.0, 1.0)),
+                (d(w * (1.0 - 1e-12), -0.5), d(0.0, 1.0)),
+                // Grazing the cap, and out of the cap down the stem.
+                (d(0.0, 1.0 - 1e-12), d(1.0, 0.0)),
+                (d(0.0, 0.5), d(0.0, -1.0)),
+                (d(0.9, 0.1), d(-1.0, -0.1)),
+            ],
+        );
+        // A cap of another radius (the general circle arithmetic).
+        check_table(&mushroom(1.5, 0.4, 0.7), &[(d(0.0, -0.5), d(0.0, 1.0))]);
+    }
+
+    #[test]
+    fn l_shape_casts_agree_including_the_reflex_corner() {
+        check_table(
+            &l_shape(),
+            &[
+                (d(0.5, 0.5), d(0.5, 0.5)),
+                (d(0.5, 0.5), d(1.5, -0.5)),
+                (d(0.5, 1.5), d(1.0, 0.0)),
+                (d(1.5, 0.5), d(0.0, 1.0)),
+                (d(1.5, 1.0), d(-1.0, 0.0)),
+                (d(1.0, 1.5), d(0.0, -1.0)),
+                (d(0.0, 0.0), d(1.0, 1.0)),
+            ],
+        );
+    }
+
+    #[test]
+    fn twenty_gon_casts_agree_including_vertices() {
+        let t = twenty_gon();
+        let special: Vec<(DVec2, DVec2)> =
+            t.walls().iter().map(|w| (DVec2::ZERO, w.start())).collect();
+        check_table(&t, &special);
+    }
+
+    #[test]
+    fn convex_arcs_that_are_not_full_circles_agree() {
+        // A square with a convex half-circle bulging in from its right wall
+        // and a D-shaped hole: a convex half circle closed by its diameter,
+        // so balls above the diameter are inside the arc's circle (the
+        // convex cast then clamps at time 0 and normalises exactly).
+        let t = SegmentTable::with_holes(
+            vec![
+                line(d(-2.0, -2.0), d(2.0, -2.0)),
+                line(d(2.0, -2.0), d(2.0, -1.0)),
+                arc(d(2.0, 0.0), 1.0, -FRAC_PI_2, -PI),
+                line(d(2.0, 1.0), d(2.0, 2.0)),
+                line(d(2.0, 2.0), d(-2.0, 2.0)),
+                line(d(-2.0, 2.0), d(-2.0, -2.0)),
+            ],
+            vec![vec![
+                arc(d(-0.8, 0.3), 0.5, 0.0, -PI),
+                line(d(-1.3, 0.3), d(-0.3, 0.3)),
+            ]],
+        )
+        .unwrap();
+        check_table(
+            &t,
+            &[
+                (d(0.0, 0.0), d(1.0, 0.0)),
+                (d(0.0, 1.0), d(1.0, 0.0)),
+                (d(-0.8, 0.5), d(0.0, -1.0)),
+                (d(-0.8, 0.5), d(1.0, 0.0)),
+                (d(-0.8, 0.31), d(0.3, -0.01)),
+                (d(-0.8, -0.3), d(0.0, 1.0)),
+            ],
+        );
+    }
+}
+
+#[cfg(test)]
+mod counts {
+    use std::f64::consts::{FRAC_PI_2, PI};
+
+    use rand::{Rng, SeedableRng};
+    use rand_pcg::Pcg64;
+    use spinball_geometry::{Boundary, DVec2, Stadium};
+
+    use super::*;
+    use crate::geom::LaneStadium;
+    use crate::lanes::counted::{Counted, take};
+
+    fn per_cast<T: Boundary, G: Geom>(name: &str, t: &T, g: &G) -> [u64; 8] {
+        const N: u64 = 10_000;
+        let mut rng = Pcg64::seed_from_u64(3);
+        take();
+        for _ in 0..N {
+            let o = t.sample_interior(&mut rng, 1.0);
+            let v = DVec2::from_angle(rng.random::<f64>() * TAU);
+            g.cast::<Counted>(Counted(o.x), Counted(o.y), Counted(v.x), Counted(v.y));
+        }
+        let c = take();
+        let names = ["add", "mul", "div", "sqrt", "cmp", "select", "mask", "bits"];
+        let per: Vec<String> = names
+            .iter()
+            .zip(c)
+            .map(|(n, k)| format!("{n} {:.2}", k as f64 / N as f64))
+            .collect();
+        println!(
+            "{name:<10} {:>6.1} per cast: {}",
+            c.iter().sum::<u64>() as f64 / N as f64,
+            per.join(", ")
+        );
+        c
+    }
+
+    #[test]
+    fn operation_counts_per_cast() {
+        let p = DVec2::new;
+        let line = |a, b| Segment::Line(LineSegment::new(a, b).unwrap());
+        let arc = |c, r, s, w| Segment::Arc(ArcSegment::new(c, r, s, w).unwrap());
+        let st = Stadium::new(1.0).unwrap();
+        per_cast("stadium", &st, &LaneStadium::new(1.0));
+        let seg = SegmentTable::new(vec![
+            line(p(-1.0, -1.0), p(1.0, -1.0)),
+            arc(p(1.0, 0.0), 1.0, -FRAC_PI_2, PI),
+            line(p(1.0, 1.0), p(-1.0, 1.0)),
+            arc(p(-1.0, 0.0), 1.0, FRAC_PI_2, PI),
+        ])
+        .unwrap();
+        per_cast("stadium-seg", &seg, &LaneSegments::new(&seg).view::<true>());
+        let (r, w, h) = (1.0, 0.3, 1.0);
+        let m = SegmentTable::new(vec![
+            line(p(-w, -h), p(w, -h)),
+            line(p(w, -h), p(w, 0.0)),
+            line(p(w, 0.0), p(r, 0.0)),
+            arc(DVec2::ZERO, r, 0.0, PI),
+            line(p(-r, 0.0), p(-w, 0.0)),
+            line(p(-w, 0.0), p(-w, -h)),
+        ])
+        .unwrap();
+        per_cast("mushroom", &m, &LaneSegments::new(&m).view::<true>());
+        let v: Vec<DVec2> = (0..20)
+            .map(|k| {
+                let radius = if k % 2 == 0 {
+                    1.0
+                } else {
+                    0.8 + 0.01 * k as f64
+                };
+                DVec2::from_angle(TAU * k as f64 / 20.0) * radius
+            })
+            .collect();
+        let g = SegmentTable::polygon(&v).unwrap();
+        per_cast("20-gon", &g, &LaneSegments::new(&g).view::<false>());
+    }
+}
