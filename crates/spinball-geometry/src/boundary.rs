@@ -59,12 +59,16 @@ pub trait Boundary {
 
     /// Whether `p` lies in the table shrunk towards the box centre by
     /// `shrink` (in `(0, 1]`): the region the paper's initial conditions are
-    /// drawn from ([`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#paper-convention), "Paper convention"). Default: `p` scaled back up
-    /// by `1/shrink` about the box centre lies in the table. Tables whose
+    /// drawn from ([`docs/PHYSICS.md`](https://github.com/spinball/spinball/blob/main/docs/PHYSICS.md#paper-convention), "Paper convention"). Default: `p` lies in the table
+    /// and so does `p` scaled back up by `1/shrink` about the box centre (for
+    /// a convex table the first follows from the second; with a hole about
+    /// the centre it does not). Tables whose
     /// reference code uses another rule (the Sinai obstacle) override it.
     fn contains_shrunk(&self, p: DVec2, shrink: f64) -> bool {
         let c = self.aabb().center();
-        self.contains(c + (p - c) / shrink)
+        // `p` itself must be in the table too: in a table with a hole about
+        // the centre, scaling up can carry a point in the hole out of it.
+        self.contains(c + (p - c) / shrink) && self.contains(p)
     }
 
     /// A bounding box of the table.
