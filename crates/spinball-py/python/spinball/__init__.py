@@ -1,0 +1,74 @@
+"""Spinning billiards from Python, over the Rust engine of spinball.
+
+A ball that carries spin ``u = rω`` moves freely inside a table; at each
+wall it trades tangential velocity for spin through ``alpha = I/(m r²)``
+(0 specular, 0.4 solid sphere, 0.5 disk, 1 thin ring). This package gives
+the tables, single trajectories as NumPy arrays, and ensemble estimates of
+the largest Lyapunov exponent (``lyapunov``, ``alpha_sweep``), its
+distribution (``LyapunovResult.ftle()``) and the full spectrum
+(``spectrum``), with standard errors, the cost and the parameters of every
+number. Exponents are per unit time at energy ½ (the paper's units: J. S.
+Lund, J. Murugan, J. P. Shock, *Spinning Billiards and Chaos*,
+arXiv:2505.15335).
+
+Tables: ``Circle(radius=1)``, ``Rectangle(l=1, h=1)``, ``Stadium(a=1)``,
+``Sinai(l=2, r=1)``, ``SegmentTable(outer, holes)`` from ``Line`` and
+``Arc`` walls (or ``SegmentTable.polygon(vertices)``), ``table("stadium:a=1")``.
+
+Errors: invalid input raises ``ValueError`` with the Rust message, a run
+that fails ``RuntimeError``; Ctrl-C during a run raises
+``KeyboardInterrupt`` after the current batch.
+
+>>> import spinball
+>>> r = spinball.lyapunov("stadium:a=1", 0.5, ics=200, collisions=5000, seed=1)
+>>> 0.15 < r.mean < 0.22
+True
+"""
+
+from ._spinball import (
+    CHAOS_THRESHOLD,
+    PAPER_DELTA0,
+    THRESHOLD_BAND,
+    Arc,
+    Billiard,
+    Circle,
+    FtleDistribution,
+    Line,
+    LyapunovResult,
+    Rectangle,
+    SegmentTable,
+    Sinai,
+    SpectrumResult,
+    Stadium,
+    Table,
+    Trajectory,
+    __version__,
+    alpha_sweep,
+    lyapunov,
+    spectrum,
+    table,
+)
+
+__all__ = [
+    "CHAOS_THRESHOLD",
+    "PAPER_DELTA0",
+    "THRESHOLD_BAND",
+    "Arc",
+    "Billiard",
+    "Circle",
+    "FtleDistribution",
+    "Line",
+    "LyapunovResult",
+    "Rectangle",
+    "SegmentTable",
+    "Sinai",
+    "SpectrumResult",
+    "Stadium",
+    "Table",
+    "Trajectory",
+    "__version__",
+    "alpha_sweep",
+    "lyapunov",
+    "spectrum",
+    "table",
+]

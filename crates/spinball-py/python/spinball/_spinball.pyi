@@ -1,0 +1,294 @@
+"""Type stubs of the native module ``spinball._spinball`` (re-exported by ``spinball``)."""
+
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+CHAOS_THRESHOLD: float
+PAPER_DELTA0: float
+THRESHOLD_BAND: List[float]
+
+Point = Union[Tuple[float, float], Sequence[float], npt.ArrayLike]
+TableLike = Union["Table", str]
+Progress = Union[None, bool, Callable[[Dict[str, Any]], Any]]
+
+class Table:
+    """A billiard table (base class); lengths in the paper's units."""
+
+    @property
+    def spec(self) -> str: ...
+    @property
+    def area(self) -> float: ...
+    @property
+    def perimeter(self) -> float: ...
+    @property
+    def curved_length(self) -> float: ...
+    @property
+    def bounds(self) -> Tuple[float, float, float, float]: ...
+    @property
+    def shape(self) -> Dict[str, Any]: ...
+    def contains(self, x: float, y: float) -> bool: ...
+
+class Circle(Table):
+    def __init__(self, radius: float = 1.0) -> None: ...
+    @property
+    def radius(self) -> float: ...
+
+class Rectangle(Table):
+    def __init__(self, l: float = 1.0, h: float = 1.0) -> None: ...
+    @property
+    def l(self) -> float: ...
+    @property
+    def h(self) -> float: ...
+
+class Stadium(Table):
+    def __init__(self, a: float = 1.0) -> None: ...
+    @property
+    def a(self) -> float: ...
+
+class Sinai(Table):
+    def __init__(self, l: float = 2.0, r: float = 1.0) -> None: ...
+    @property
+    def l(self) -> float: ...
+    @property
+    def r(self) -> float: ...
+
+class Line:
+    def __init__(self, start: Point, end: Point) -> None: ...
+    @property
+    def start(self) -> Tuple[float, float]: ...
+    @property
+    def end(self) -> Tuple[float, float]: ...
+    @property
+    def length(self) -> float: ...
+
+class Arc:
+    def __init__(self, center: Point, radius: float, start_angle: float, sweep: float) -> None: ...
+    @property
+    def center(self) -> Tuple[float, float]: ...
+    @property
+    def radius(self) -> float: ...
+    @property
+    def start_angle(self) -> float: ...
+    @property
+    def sweep(self) -> float: ...
+    @property
+    def start(self) -> Tuple[float, float]: ...
+    @property
+    def end(self) -> Tuple[float, float]: ...
+    @property
+    def length(self) -> float: ...
+
+class SegmentTable(Table):
+    def __init__(
+        self, outer: Sequence[Union[Line, Arc]], holes: Optional[Sequence[Sequence[Union[Line, Arc]]]] = None
+    ) -> None: ...
+    @staticmethod
+    def polygon(vertices: npt.ArrayLike) -> "SegmentTable": ...
+    @property
+    def outer(self) -> List[Union[Line, Arc]]: ...
+    @property
+    def holes(self) -> List[List[Union[Line, Arc]]]: ...
+
+def table(spec: str) -> Table:
+    """The built-in table a spec string names (``"stadium:a=1"``)."""
+
+class Trajectory:
+    """One trajectory, one array per quantity (length = collisions)."""
+
+    @property
+    def time(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def x(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def y(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def vx(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def vy(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def u(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def wall(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def s(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def v_par(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def q(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def start(self) -> Tuple[float, float, float, float, float]: ...
+    def to_dict(self) -> Dict[str, np.ndarray]: ...
+    def __len__(self) -> int: ...
+
+class Billiard:
+    """A table with the spin law of ``alpha`` (in [0, 1] unless ``extended``)."""
+
+    def __init__(self, table: TableLike, alpha: float, extended: bool = False) -> None: ...
+    @property
+    def alpha(self) -> float: ...
+    @property
+    def extended(self) -> bool: ...
+    @property
+    def table(self) -> str: ...
+    def energy(self, vx: float, vy: float, u: float) -> float: ...
+    def trajectory(self, collisions: int, position: Point, velocity: Point, spin: float = 0.0) -> Trajectory: ...
+    def initial_states(
+        self, n: int, seed: int = 0, sampler: Optional[str] = None, first_index: int = 0
+    ) -> npt.NDArray[np.float64]: ...
+
+class FtleDistribution:
+    def __init__(self, exponents: Sequence[float]) -> None: ...
+    @property
+    def exponents(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def mean(self) -> float: ...
+    @property
+    def median(self) -> float: ...
+    @property
+    def std(self) -> Optional[float]: ...
+    @property
+    def sem(self) -> Optional[float]: ...
+    @property
+    def min(self) -> float: ...
+    @property
+    def max(self) -> float: ...
+    def quantile(self, q: float) -> float: ...
+    def conditional_mean(self, threshold: float = ...) -> Optional[float]: ...
+    def chaotic_fraction(self, threshold: float = ...) -> Tuple[float, float]: ...
+    def chaotic_fraction_band(self, thresholds: Optional[Sequence[float]] = None) -> Dict[str, Any]: ...
+    def dhf_product(self, threshold: float = ...) -> float: ...
+    def histogram(
+        self, bins: int = 50, range: Optional[Tuple[float, float]] = None
+    ) -> Tuple[npt.NDArray[np.int64], npt.NDArray[np.float64]]: ...
+    def __len__(self) -> int: ...
+
+class LyapunovResult:
+    """An ensemble estimate of the largest Lyapunov exponent (per unit time)."""
+
+    mean: float
+    sem: float
+    median: float
+    std: float
+    min: float
+    max: float
+    threshold: float
+    conditional_mean: Optional[float]
+    chaotic_fraction: float
+    chaotic_fraction_sem: float
+    per_collision_mean: float
+    collision_rate: float
+    total_time: float
+    n_ics: int
+    first_index: int
+    collisions_per_ic: int
+    wall_time_s: float
+    seed: int
+    table: str
+    alpha: float
+    method: str
+    delta0: Optional[float]
+    sampler: Optional[str]
+    engine: str
+    version: str
+    stop: str
+    rel_sem: float
+    exponents: npt.NDArray[np.float64]
+    per_collision: npt.NDArray[np.float64]
+    times: npt.NDArray[np.float64]
+    collisions: npt.NDArray[np.int64]
+    indices: npt.NDArray[np.int64]
+    provenance: Dict[str, Any]
+    def ftle(self) -> FtleDistribution: ...
+    def merge(self, other: "LyapunovResult") -> "LyapunovResult": ...
+    def to_json(self, indent: Optional[int] = None) -> str: ...
+    def to_dict(self) -> Dict[str, Any]: ...
+    @staticmethod
+    def from_json(text: str) -> "LyapunovResult": ...
+
+class SpectrumResult:
+    """The Lyapunov spectrum averaged over an ensemble."""
+
+    mean: npt.NDArray[np.float64]
+    sem: npt.NDArray[np.float64]
+    per_collision_mean: npt.NDArray[np.float64]
+    sum_mean: float
+    sum_max_abs: float
+    floored: int
+    exponents: npt.NDArray[np.float64]
+    per_collision: npt.NDArray[np.float64]
+    times: npt.NDArray[np.float64]
+    alpha: float
+    table: str
+    method: str
+    delta0: Optional[float]
+    qr_interval: int
+    collisions_per_ic: int
+    sampler: str
+    seed: int
+    n_ics: int
+    first_index: int
+    wall_time_s: float
+    def to_json(self, indent: Optional[int] = None) -> str: ...
+    def to_dict(self) -> Dict[str, Any]: ...
+
+def lyapunov(
+    table: TableLike,
+    alpha: float,
+    *,
+    ics: Optional[int] = None,
+    collisions: int = 10_000,
+    method: str = "fd",
+    delta0: Optional[float] = None,
+    seed: int = 0,
+    sampler: Optional[str] = None,
+    threads: Optional[int] = None,
+    initial_states: Optional[npt.ArrayLike] = None,
+    first_index: int = 0,
+    threshold: float = 0.01,
+    engine: str = "lanes",
+    extended: bool = False,
+    target_rel_sem: Optional[float] = None,
+    batch: int = 64,
+    time_budget: Optional[float] = None,
+    progress: Progress = None,
+) -> LyapunovResult: ...
+def alpha_sweep(
+    table: TableLike,
+    alphas: Sequence[float],
+    *,
+    ics: Optional[int] = None,
+    collisions: int = 10_000,
+    method: str = "fd",
+    delta0: Optional[float] = None,
+    seed: int = 0,
+    sampler: Optional[str] = None,
+    threads: Optional[int] = None,
+    initial_states: Optional[npt.ArrayLike] = None,
+    first_index: int = 0,
+    threshold: float = 0.01,
+    engine: str = "lanes",
+    extended: bool = False,
+    target_rel_sem: Optional[float] = None,
+    batch: int = 64,
+    time_budget: Optional[float] = None,
+    progress: Progress = None,
+) -> List[LyapunovResult]: ...
+def spectrum(
+    table: TableLike,
+    alpha: float,
+    *,
+    ics: int = 50,
+    collisions: int = 50_000,
+    method: str = "tangent",
+    delta0: Optional[float] = None,
+    seed: int = 0,
+    sampler: Optional[str] = None,
+    threads: Optional[int] = None,
+    first_index: int = 0,
+    qr_interval: int = 1,
+    extended: bool = False,
+    progress: Progress = None,
+) -> SpectrumResult: ...
