@@ -207,16 +207,21 @@ def test_bad_input_raises(call, error, words):
 
 
 def test_ftle_distribution_statistics():
-    f = sb.FtleDistribution([0.0, 0.005, 0.2, 0.3, 0.4])
-    assert f.mean == pytest.approx(0.181) and f.median == 0.2 and len(f) == 5
+    f = sb.FtleDistribution([0.0, 0.005, 0.15, 0.25, 0.45])
+    assert f.mean == pytest.approx(0.171) and f.median == 0.15 and len(f) == 5
     assert f.quantile(0.25) == np.quantile(f.exponents, 0.25)
     frac, sem = f.chaotic_fraction()
     assert frac == 0.6 and sem == pytest.approx(math.sqrt(0.6 * 0.4 / 5))
-    assert f.conditional_mean() == pytest.approx(0.3)
-    assert f.dhf_product() == pytest.approx(0.181 * 0.6)
+    assert f.conditional_mean() == pytest.approx(0.85 / 3)
+    assert f.dhf_product() == pytest.approx(0.171 * 0.6)
     counts, edges = f.histogram(bins=4, range=(0.0, 0.4))
-    assert counts.dtype == np.int64 and edges.shape == (5,)
-    assert list(counts) == [2, 0, 1, 1]  # 0.4 sits at the open right edge
+    assert counts.dtype == np.int64 and edges.dtype == np.float64
+    assert list(counts) == [2, 1, 1, 0]  # 0.45 lies outside [0, 0.4)
+    assert np.allclose(edges, [0.0, 0.1, 0.2, 0.3, 0.4])
+    auto_counts, _ = f.histogram(bins=3)
+    assert auto_counts.sum() == 5  # the default range holds every value
     band = f.chaotic_fraction_band()
     assert list(band["thresholds"]) == sb.THRESHOLD_BAND
-    assert band["min"] == 0.6 and band["max"] == 0.6 and band["spread"] == 0.0
+    # Thresholds 0.001, 0.002 count 0.005 as chaotic; 0.005 and above do not.
+    assert list(band["fractions"]) == [0.8, 0.8, 0.6, 0.6, 0.6, 0.6]
+    assert (band["min"], band["max"]) == (0.6, 0.8) and band["spread"] == pytest.approx(0.2)
