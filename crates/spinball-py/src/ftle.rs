@@ -4,7 +4,7 @@
 use numpy::{IntoPyArray, PyArray1};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use spinball_analysis::{CHAOS_THRESHOLD, FtleDistribution, THRESHOLD_BAND};
+use spinball_analysis::{FtleDistribution, THRESHOLD_BAND};
 
 use crate::args::count;
 use crate::errors::analysis;
@@ -71,13 +71,13 @@ impl PyFtleDistribution {
     }
     /// Mean over the chaotic trajectories (FTLE > `threshold`); `None` if
     /// there are none.
-    #[pyo3(signature = (threshold = CHAOS_THRESHOLD))]
+    #[pyo3(signature = (threshold = 0.01))]
     fn conditional_mean(&self, threshold: f64) -> Option<f64> {
         self.inner.conditional_mean(threshold)
     }
     /// `(fraction, sem)`: the share of trajectories with FTLE > `threshold`
     /// (default 0.01, the paper's) and its binomial standard error.
-    #[pyo3(signature = (threshold = CHAOS_THRESHOLD))]
+    #[pyo3(signature = (threshold = 0.01))]
     fn chaotic_fraction(&self, threshold: f64) -> (f64, f64) {
         let f = self.inner.chaotic_fraction_at(threshold);
         (f.fraction, f.sem)
@@ -105,7 +105,7 @@ impl PyFtleDistribution {
         Ok(d)
     }
     /// The Datseris–Hupe–Fleischmann product `mean · chaotic fraction`.
-    #[pyo3(signature = (threshold = CHAOS_THRESHOLD))]
+    #[pyo3(signature = (threshold = 0.01))]
     fn dhf_product(&self, threshold: f64) -> f64 {
         self.inner.dhf_product(threshold)
     }

@@ -23,6 +23,10 @@ use crate::tables::table_arg;
 use crate::watch::Watch;
 use crate::with_table;
 
+// The signatures below write the default threshold as the literal 0.01 so
+// that `help()` shows it; it is the paper's threshold.
+const _: () = assert!(CHAOS_THRESHOLD == 0.01);
+
 /// Everything of an ensemble but its table and spin law.
 struct Plan {
     states: Option<Vec<State>>,
@@ -148,7 +152,7 @@ impl Plan {
 #[pyo3(signature = (
     table, alpha, *, ics = None, collisions = 10_000, method = "fd", delta0 = None, seed = 0,
     sampler = None, threads = None, initial_states = None, first_index = 0,
-    threshold = CHAOS_THRESHOLD, engine = "lanes", extended = false, target_rel_sem = None,
+    threshold = 0.01, engine = "lanes", extended = false, target_rel_sem = None,
     batch = 64, time_budget = None, progress = None
 ))]
 #[allow(clippy::too_many_arguments)]
@@ -211,7 +215,7 @@ pub fn lyapunov(
 #[pyo3(signature = (
     table, alphas, *, ics = None, collisions = 10_000, method = "fd", delta0 = None, seed = 0,
     sampler = None, threads = None, initial_states = None, first_index = 0,
-    threshold = CHAOS_THRESHOLD, engine = "lanes", extended = false, target_rel_sem = None,
+    threshold = 0.01, engine = "lanes", extended = false, target_rel_sem = None,
     batch = 64, time_budget = None, progress = None
 ))]
 #[allow(clippy::too_many_arguments)]
