@@ -1,7 +1,7 @@
 //! The ensemble functions: `lyapunov`, `alpha_sweep`, `spectrum`.
 //!
 //! Each parses its arguments into the Rust description of the run
-//! ([`Plan`] → [`Ensemble`], [`AlphaSweep`], `spectrum_ensemble`), releases
+//! (a plan → [`Ensemble`], [`AlphaSweep`], `spectrum_ensemble`), releases
 //! the GIL, and runs it through the analysis crate's driver with a [`Watch`]
 //! between batches.
 
