@@ -209,8 +209,14 @@ pub fn lyapunov(
 
 /// λ(α): `lyapunov` at each α of `alphas` (same table, initial conditions,
 /// seed and options at every point); returns a list of `LyapunovResult`
-/// in the order of `alphas`. Arguments, errors and Ctrl-C as `lyapunov`;
-/// `progress` events carry the point index `point` of `points`.
+/// in the order of `alphas`. Arguments as `lyapunov`; `progress` events
+/// carry the point index `point` of `points`.
+///
+/// Raises `ValueError` for an empty `alphas`, an α outside `[0, 1]`
+/// without `extended=True`, and every invalid argument `lyapunov` rejects;
+/// `RuntimeError` if a trajectory fails; `KeyboardInterrupt` on Ctrl-C
+/// (checked between batches; the points already finished are not
+/// returned, so run long sweeps point by point to keep them).
 #[pyfunction]
 #[pyo3(signature = (
     table, alphas, *, ics = None, collisions = 10_000, method = "fd", delta0 = None, seed = 0,
