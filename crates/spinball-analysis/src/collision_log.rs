@@ -3,8 +3,9 @@
 //!
 //! Each row is one collision: the time it happens (from the start), the
 //! contact point, the velocity and spin just after it, the wall, the
-//! Birkhoff coordinates `s` and `v∥` (after), and `Q = v∥ − αu`, which the
-//! collision leaves unchanged (paper eq. 12).
+//! Birkhoff coordinates `s` and `v∥` (the tangential velocity just before
+//! it), and `Q = v∥ − αu`, which the collision leaves unchanged (paper
+//! eq. 12).
 
 use spinball_core::{Billiard, Collision, State};
 use spinball_geometry::Boundary;
@@ -38,7 +39,7 @@ impl CollisionLog {
             after.spin,
             f64::from(collision.wall()),
             collision.hit.s(),
-            collision.v_par_after,
+            collision.v_par_before,
             collision.q,
         ]
     }
@@ -74,9 +75,11 @@ impl CollisionLog {
 /// let start = State::new(DVec2::new(0.1, 0.2), DVec2::new(0.6, 0.8), 0.0);
 /// let log = collision_log(&billiard, start, 100)?;
 /// assert_eq!(log.rows.len(), 100);
-/// // Q = v∥ − αu after each collision is the stored Q.
-/// for r in &log.rows {
-///     assert!((r[8] - 0.5 * r[5] - r[9]).abs() < 1e-12);
+/// // Q = v∥ − αu with v∥ and u just before each collision (the spin
+/// // before collision k is the spin after collision k − 1).
+/// for k in 1..log.rows.len() {
+///     let (r, prev) = (log.rows[k], log.rows[k - 1]);
+///     assert!((r[8] - 0.5 * prev[5] - r[9]).abs() < 1e-12);
 /// }
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```

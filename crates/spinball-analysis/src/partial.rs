@@ -197,7 +197,9 @@ pub fn merge_partials(
         }
     }
     parts.sort_by_key(|p| (p.indices.start, p.indices.end));
-    let start = expected.as_ref().map_or(parts[0].indices.start, |r| r.start);
+    let start = expected
+        .as_ref()
+        .map_or(parts[0].indices.start, |r| r.start);
     let mut next = start;
     for (i, p) in parts.iter().enumerate() {
         if p.indices.start > next {

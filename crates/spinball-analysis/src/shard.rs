@@ -112,7 +112,10 @@ mod tests {
 
     #[test]
     fn parses_and_rejects() {
-        assert_eq!("1/4".parse::<Shard>().unwrap(), Shard { index: 1, count: 4 });
+        assert_eq!(
+            "1/4".parse::<Shard>().unwrap(),
+            Shard { index: 1, count: 4 }
+        );
         assert_eq!(Shard::new(3, 4).unwrap().to_string(), "3/4");
         for bad in ["4/4", "1/0", "x/2", "2", "-1/3", ""] {
             let e = bad.parse::<Shard>().unwrap_err().to_string();

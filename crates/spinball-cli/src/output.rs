@@ -37,7 +37,8 @@ pub struct OutputArgs {
 /// # Errors
 /// [`CliError::Failed`] if it cannot be written.
 pub fn write_npy(path: &Path, shape: &[u64], values: &[f64]) -> Result<(), CliError> {
-    let fail = |e: std::io::Error| CliError::Failed(format!("cannot write {}: {e}", path.display()));
+    let fail =
+        |e: std::io::Error| CliError::Failed(format!("cannot write {}: {e}", path.display()));
     let file = fs::File::create(path).map_err(fail)?;
     let mut w = npyz::WriteOptions::new()
         .default_dtype()
@@ -54,7 +55,8 @@ pub fn write_npy(path: &Path, shape: &[u64], values: &[f64]) -> Result<(), CliEr
 /// # Errors
 /// [`CliError::Failed`] if it cannot be written.
 pub fn write_text(path: &Path, text: &str) -> Result<(), CliError> {
-    fs::write(path, text).map_err(|e| CliError::Failed(format!("cannot write {}: {e}", path.display())))
+    fs::write(path, text)
+        .map_err(|e| CliError::Failed(format!("cannot write {}: {e}", path.display())))
 }
 
 impl OutputArgs {

@@ -2,9 +2,7 @@
 //! initial conditions, collisions, method) and how (engine, threads, shard).
 
 use clap::{Args, ValueEnum};
-use spinball_analysis::{
-    CHAOS_THRESHOLD, Engine, Ensemble, Method, PAPER_DELTA0, Shard, Threads,
-};
+use spinball_analysis::{CHAOS_THRESHOLD, Engine, Ensemble, Method, PAPER_DELTA0, Shard, Threads};
 use spinball_core::{Sampler, SpinLaw, SpinLawError};
 use spinball_geometry::Built;
 
@@ -48,7 +46,12 @@ pub struct RunArgs {
     pub table: String,
     /// Spin parameters α = I/(m r²), comma-separated (in [0, 1] unless
     /// --extended).
-    #[arg(long, value_delimiter = ',', required = true, allow_negative_numbers = true)]
+    #[arg(
+        long,
+        value_delimiter = ',',
+        required = true,
+        allow_negative_numbers = true
+    )]
     pub alpha: Vec<f64>,
     /// Allow α > 1 (the mathematical extension of the law).
     #[arg(long)]
@@ -177,12 +180,27 @@ impl RunArgs {
         let mut words = vec![
             format!("--ics {}", self.ics),
             format!("--collisions {}", self.collisions),
-            format!("--method {}", self.method.to_possible_value().map_or_else(String::new, |v| v.get_name().to_string())),
+            format!(
+                "--method {}",
+                self.method
+                    .to_possible_value()
+                    .map_or_else(String::new, |v| v.get_name().to_string())
+            ),
             format!("--delta0 {}", self.delta0),
             format!("--seed {}", self.seed),
-            format!("--sampler {}", self.sampler.to_possible_value().map_or_else(String::new, |v| v.get_name().to_string())),
+            format!(
+                "--sampler {}",
+                self.sampler
+                    .to_possible_value()
+                    .map_or_else(String::new, |v| v.get_name().to_string())
+            ),
             format!("--threshold {}", self.threshold),
-            format!("--engine {}", self.engine.to_possible_value().map_or_else(String::new, |v| v.get_name().to_string())),
+            format!(
+                "--engine {}",
+                self.engine
+                    .to_possible_value()
+                    .map_or_else(String::new, |v| v.get_name().to_string())
+            ),
         ];
         if self.extended {
             words.push("--extended".into());

@@ -21,8 +21,10 @@ pub fn read_table(arg: &str) -> Result<Built, CliError> {
             .and_then(|f| f.build())
             .map_err(CliError::usage)
     } else {
-        arg.parse::<Table>()
-            .map(Built::Table)
-            .map_err(|e| CliError::Usage(format!("--table {arg}: {e} (or give a .toml/.json table file)")))
+        arg.parse::<Table>().map(Built::Table).map_err(|e| {
+            CliError::Usage(format!(
+                "--table {arg}: {e} (or give a .toml/.json table file)"
+            ))
+        })
     }
 }

@@ -31,9 +31,11 @@ pub fn progress_bar(quiet: bool) -> ProgressBar {
     }
     let bar = ProgressBar::new(0);
     bar.set_style(
-        ProgressStyle::with_template("{prefix} [{bar:30}] {pos}/{len} ICs {msg} ({elapsed}, ~{eta} left)")
-            .expect("the template is valid")
-            .progress_chars("=> "),
+        ProgressStyle::with_template(
+            "{prefix} [{bar:30}] {pos}/{len} ICs {msg} ({elapsed}, ~{eta} left)",
+        )
+        .expect("the template is valid")
+        .progress_chars("=> "),
     );
     bar
 }
@@ -70,8 +72,13 @@ impl<'a> Watch<'a> {
 impl RunObserver for Watch<'_> {
     fn observe(&mut self, event: &RunEvent<'_>) -> Control {
         match event {
-            RunEvent::Started { point, points, alpha } => {
-                self.bar.set_prefix(format!("α = {alpha} ({}/{points})", point + 1));
+            RunEvent::Started {
+                point,
+                points,
+                alpha,
+            } => {
+                self.bar
+                    .set_prefix(format!("α = {alpha} ({}/{points})", point + 1));
                 self.bar.set_position(0);
             }
             RunEvent::Trajectories(done) => {
@@ -83,13 +90,15 @@ impl RunObserver for Watch<'_> {
             RunEvent::Batch(p) => {
                 self.bar.set_length(p.ics_max);
                 self.bar.set_position(p.ics_done);
-                self.bar.set_message(format!("λ = {:.5} ± {:.5}", p.mean, p.sem));
+                self.bar
+                    .set_message(format!("λ = {:.5} ± {:.5}", p.mean, p.sem));
             }
             _ => {}
         }
         let late = self.deadline.is_some_and(|d| Instant::now() >= d);
         if self.stop.load(Ordering::SeqCst) || late {
-            self.stopped.get_or_insert(CliError::Interrupted { checkpoint: None });
+            self.stopped
+                .get_or_insert(CliError::Interrupted { checkpoint: None });
             return Control::Stop;
         }
         Control::Continue
@@ -100,7 +109,9 @@ impl RunObserver for Watch<'_> {
 pub fn deadline(seconds: Option<f64>) -> Result<Option<Instant>, CliError> {
     match seconds {
         None => Ok(None),
-        Some(s) if s.is_finite() && s > 0.0 => Ok(Some(Instant::now() + Duration::from_secs_f64(s))),
+        Some(s) if s.is_finite() && s > 0.0 => {
+            Ok(Some(Instant::now() + Duration::from_secs_f64(s)))
+        }
         Some(s) => Err(CliError::Usage(format!(
             "--time-limit {s}: must be a positive number of seconds"
         ))),

@@ -326,8 +326,14 @@ mod tests {
     fn bad_files_say_what_is_wrong() {
         let cases = [
             ("", "exactly one of"),
-            ("builtin = \"stadium:a=1\"\npolygon = [[0,0],[1,0],[0,1]]", "exactly one of"),
-            ("outer = [ { arc = { center = [0,0], radius = 1, sweep = 1 } } ]", "`start`"),
+            (
+                "builtin = \"stadium:a=1\"\npolygon = [[0,0],[1,0],[0,1]]",
+                "exactly one of",
+            ),
+            (
+                "outer = [ { arc = { center = [0,0], radius = 1, sweep = 1 } } ]",
+                "`start`",
+            ),
             (
                 "outer = [ { arc = { center = [0,0], radius = 1, start = 0, start_deg = 0, sweep = 1 } } ]",
                 "both",

@@ -33,7 +33,10 @@ fn nth(path: &std::path::Path, k: usize, n: usize) -> PathBuf {
     if n == 1 {
         return path.to_path_buf();
     }
-    let stem = path.file_stem().map(|s| s.to_string_lossy()).unwrap_or_default();
+    let stem = path
+        .file_stem()
+        .map(|s| s.to_string_lossy())
+        .unwrap_or_default();
     let name = match path.extension() {
         Some(e) => format!("{stem}.alpha-{k}.{}", e.to_string_lossy()),
         None => format!("{stem}.alpha-{k}"),

@@ -94,8 +94,8 @@ fn absolute_table(arg: &str) -> Result<String, CliError> {
     read_table(arg)?;
     let p = Path::new(arg);
     if p.extension().is_some_and(|e| e == "toml" || e == "json") {
-        let abs = fs::canonicalize(p)
-            .map_err(|e| CliError::Usage(format!("table file {arg}: {e}")))?;
+        let abs =
+            fs::canonicalize(p).map_err(|e| CliError::Usage(format!("table file {arg}: {e}")))?;
         Ok(abs.display().to_string())
     } else {
         Ok(arg.to_string())
@@ -233,11 +233,14 @@ echo \"array job $array, merge job $merge\"
         .enumerate()
         .flat_map(|(t, table)| {
             let dir = &dir;
-            run.alpha.iter().enumerate().map(move |(a, &alpha)| CampaignResult {
-                table: table.clone(),
-                alpha,
-                json: dir.join("results").join(format!("t{t}_a{a}.json")),
-            })
+            run.alpha
+                .iter()
+                .enumerate()
+                .map(move |(a, &alpha)| CampaignResult {
+                    table: table.clone(),
+                    alpha,
+                    json: dir.join("results").join(format!("t{t}_a{a}.json")),
+                })
         })
         .collect();
     let campaign = Campaign {

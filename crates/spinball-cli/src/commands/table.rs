@@ -72,7 +72,10 @@ pub fn table(args: &TableArgs) -> Result<(), CliError> {
             "bounding box   [{}, {}] x [{}, {}]",
             d.bounding_box[0], d.bounding_box[2], d.bounding_box[1], d.bounding_box[3]
         );
-        println!("engine         {} (what ensembles on it run)", d.engine.name());
+        println!(
+            "engine         {} (what ensembles on it run)",
+            d.engine.name()
+        );
     }
     if let Some(path) = &args.json {
         write_json(path, &d)?;

@@ -28,10 +28,10 @@ pub struct TrajectoryArgs {
     #[arg(long, default_value_t = 100)]
     pub collisions: u64,
     /// Start position `x,y` (with --velocity; else the start is drawn).
-    #[arg(long, value_delimiter = ',', num_args = 2, allow_negative_numbers = true)]
+    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
     pub position: Option<Vec<f64>>,
     /// Start velocity `vx,vy`.
-    #[arg(long, value_delimiter = ',', num_args = 2, allow_negative_numbers = true)]
+    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
     pub velocity: Option<Vec<f64>>,
     /// Start spin u = rω.
     #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
@@ -68,8 +68,15 @@ pub fn trajectory(args: &TrajectoryArgs) -> Result<(), CliError> {
         SpinLaw::new(args.alpha)
     }
     .map_err(|e| CliError::Usage(format!("--alpha {}: {e}", args.alpha)))?;
+    let pair = |v: &[f64], name: &str| match v {
+        [x, y] => Ok(DVec2::new(*x, *y)),
+        _ => Err(CliError::Usage(format!(
+            "--{name} takes two numbers, x,y (got {})",
+            v.len()
+        ))),
+    };
     let start = match (&args.position, &args.velocity) {
-        (Some(p), Some(v)) => State::new(DVec2::new(p[0], p[1]), DVec2::new(v[0], v[1]), args.spin),
+        (Some(p), Some(v)) => State::new(pair(p, "position")?, pair(v, "velocity")?, args.spin),
         (None, None) => {
             let sampler = match args.sampler {
                 SamplerArg::Paper => Sampler::Paper,
@@ -95,7 +102,11 @@ pub fn trajectory(args: &TrajectoryArgs) -> Result<(), CliError> {
     })?;
     if let Some(path) = &args.npy {
         let values: Vec<f64> = log.rows.iter().flatten().copied().collect();
-        write_npy(path, &[log.rows.len() as u64, COLLISION_COLUMNS.len() as u64], &values)?;
+        write_npy(
+            path,
+            &[log.rows.len() as u64, COLLISION_COLUMNS.len() as u64],
+            &values,
+        )?;
     }
     match &args.csv {
         Some(path) => write_text(path, &log.to_csv())?,
