@@ -266,13 +266,16 @@ mod tests {
                 SweepEvent::Finished {
                     point, estimate, ..
                 } => log.push(format!("F{point}:{}", estimate.n_ics)),
+                SweepEvent::Trajectories(done) => log.push(format!("T{}", done.len())),
             })
             .unwrap();
         let expect: Vec<String> = [0, 1]
             .iter()
             .flat_map(|p| {
                 std::iter::once(format!("S{p}/2"))
-                    .chain((1..=4).map(move |k| format!("B{p}:{}", 10 * k)))
+                    .chain(
+                        (1..=4).flat_map(move |k| ["T10".to_string(), format!("B{p}:{}", 10 * k)]),
+                    )
                     .chain(std::iter::once(format!("F{p}:40")))
             })
             .collect();

@@ -68,6 +68,10 @@ pub enum RunEvent<'a> {
         /// Its α.
         alpha: f64,
     },
+    /// The trajectories of the batch that just finished, in index order
+    /// (reported before its [`RunEvent::Batch`]): what a checkpoint writer
+    /// keeps.
+    Trajectories(&'a [TrajectoryStats]),
     /// A batch of initial conditions finished.
     Batch(&'a BatchProgress),
     /// Point `point` finished with `estimate`.
@@ -226,10 +230,42 @@ impl<B: Boundary + Sync> Ensemble<B> {
         point: Point,
         observer: &mut O,
     ) -> Result<LyapunovEstimate, AnalysisError> {
+        self.validate()?;
+        let clock = Instant::now();
+        let Batches {
+            trajectories,
+            reason,
+        } = self.batches(stop, point, Vec::new(), observer)?;
+        if trajectories.len() < 2 && reason == StopReason::Cancelled {
+            return Err(AnalysisError::Cancelled);
+        }
+        let wall = clock.elapsed().as_secs_f64();
+        let estimate =
+            LyapunovEstimate::from_trajectories(&self.provenance(), trajectories, wall, reason)?;
+        let finished = RunEvent::Finished {
+            point: point.index,
+            points: point.of,
+            estimate: &estimate,
+        };
+        // A stop asked for at the very end has nothing left to stop.
+        let _ = observer.observe(&finished);
+        Ok(estimate)
+    }
+
+    /// The batch loop: run from the end of `done` (trajectories already
+    /// computed from the start of the index range, in order) until the
+    /// rule, the range or the observer stops it.
+    pub(crate) fn batches<O: RunObserver + ?Sized>(
+        &self,
+        stop: Option<&StopRule>,
+        point: Point,
+        done: Vec<TrajectoryStats>,
+        observer: &mut O,
+    ) -> Result<Batches, AnalysisError> {
         if let Some(rule) = stop {
             rule.validate()?;
         }
-        self.validate()?;
+        self.validate_settings()?;
         let alpha = self.alpha();
         let started = RunEvent::Started {
             point: point.index,
@@ -241,9 +277,15 @@ impl<B: Boundary + Sync> Ensemble<B> {
         let (start, end) = (self.indices.start, self.indices.end);
         let n = end - start;
         let batch = stop.map_or_else(|| default_batch(n), |r| r.batch);
-        let mut trajectories: Vec<TrajectoryStats> = Vec::new();
-        let mut acc = Accumulator::new();
-        let mut next = start;
+        let mut acc: Accumulator = done.iter().map(|t| t.exponent).collect();
+        let mut next = start.saturating_add(done.len() as u64).min(end);
+        let mut trajectories = done;
+        if next >= end && stop.is_none() {
+            return Ok(Batches {
+                trajectories,
+                reason: StopReason::Completed,
+            });
+        }
         let reason = loop {
             if cancelled {
                 break StopReason::Cancelled;
@@ -253,6 +295,7 @@ impl<B: Boundary + Sync> Ensemble<B> {
             for t in &part {
                 acc.push(t.exponent);
             }
+            cancelled = observer.observe(&RunEvent::Trajectories(&part)) == Control::Stop;
             trajectories.extend(part);
             next = hi;
             let (mean, sem) = (
@@ -270,7 +313,7 @@ impl<B: Boundary + Sync> Ensemble<B> {
                 target_rel_sem: stop.map(|r| r.target_rel_sem),
                 elapsed_s: clock.elapsed().as_secs_f64(),
             };
-            cancelled = observer.observe(&RunEvent::Batch(&progress)) == Control::Stop;
+            cancelled |= observer.observe(&RunEvent::Batch(&progress)) == Control::Stop;
             match stop {
                 Some(rule) => {
                     if rule.target_met(acc.count(), mean, sem) {
@@ -287,19 +330,16 @@ impl<B: Boundary + Sync> Ensemble<B> {
                 None => {}
             }
         };
-        if trajectories.len() < 2 && reason == StopReason::Cancelled {
-            return Err(AnalysisError::Cancelled);
-        }
-        let wall = clock.elapsed().as_secs_f64();
-        let estimate =
-            LyapunovEstimate::from_trajectories(&self.provenance(), trajectories, wall, reason)?;
-        let finished = RunEvent::Finished {
-            point: point.index,
-            points: point.of,
-            estimate: &estimate,
-        };
-        // A stop asked for at the very end has nothing left to stop.
-        let _ = observer.observe(&finished);
-        Ok(estimate)
+        Ok(Batches {
+            trajectories,
+            reason,
+        })
     }
+}
+
+/// What the batch loop produced: the trajectories from the start of the
+/// range, and why it stopped.
+pub(crate) struct Batches {
+    pub trajectories: Vec<TrajectoryStats>,
+    pub reason: StopReason,
 }

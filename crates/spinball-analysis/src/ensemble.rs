@@ -254,6 +254,17 @@ impl<B: Boundary> Ensemble<B> {
                 ),
             ));
         }
+        self.validate_settings()
+    }
+
+    /// Check everything [`validate`](Self::validate) checks except the
+    /// number of initial conditions: what a piece of a run (a
+    /// [`PartialRun`](crate::PartialRun), a shard of one initial condition)
+    /// needs.
+    ///
+    /// # Errors
+    /// As [`validate`](Self::validate), bar the count.
+    pub fn validate_settings(&self) -> Result<(), AnalysisError> {
         if let Some(n) = self.starts.count()
             && self.indices.end > n
         {

@@ -59,6 +59,7 @@
 #![forbid(unsafe_code)]
 
 pub mod alpha_sweep;
+pub mod collision_log;
 pub mod collision_rate;
 pub mod convergence;
 pub mod curved_share;
@@ -73,12 +74,14 @@ pub mod lyapunov;
 pub mod measurement;
 pub mod paper;
 pub mod parallel;
+pub mod partial;
 pub mod provenance;
 pub mod q_pairs;
 pub mod result;
 pub mod rows;
 pub mod saturation;
 pub mod separation;
+pub mod shard;
 pub mod spectrum;
 pub mod spectrum_ensemble;
 pub mod starts;
@@ -90,6 +93,7 @@ pub mod trajectory;
 pub mod wall_statistics;
 
 pub use alpha_sweep::{AlphaSweep, SweepEvent, linspace};
+pub use collision_log::{COLLISION_COLUMNS, CollisionLog, collision_log};
 pub use collision_rate::{
     CollisionRate, RateSummary, collision_rate_summary, initial_mean_speed,
     liouville_collision_rate, per_collision_exponent, rate_summary,
@@ -117,6 +121,7 @@ pub use lyapunov::{
 };
 pub use measurement::{Measurement, dhf_product, normalised, paired_difference};
 pub use parallel::{Threads, map_chunks, map_indices};
+pub use partial::{MergeError, PartialRun, merge_partials};
 pub use provenance::{Provenance, TableRecord};
 pub use q_pairs::{PairClass, QPair, QPairStatistics, q_pair_statistics};
 pub use result::{LyapunovEstimate, StopReason};
@@ -125,6 +130,7 @@ pub use saturation::{SeparationSummary, summarize_separation};
 pub use separation::{
     LinearFit, Separation, SeparationOptions, phase_space_separation, separation_growth,
 };
+pub use shard::Shard;
 pub use spectrum::{MAX_QR_INTERVAL, Spectrum, SpectrumOptions, lyapunov_spectrum};
 pub use spectrum_ensemble::{SpectrumEstimate, spectrum_ensemble};
 pub use starts::Starts;
@@ -133,7 +139,7 @@ pub use stats::{
     quantiles,
 };
 pub use stop_rule::StopRule;
-pub use trajectory::{TrajectoryStats, ftle_trajectories, trajectory_ftle};
+pub use trajectory::{TrajectoryStats, ftle_trajectories, trajectories_csv, trajectory_ftle};
 pub use wall_statistics::{
     DeltaQPopulation, TransitionRule, WallStatistics, wall_statistics, wall_statistics_ensemble,
 };

@@ -115,6 +115,52 @@ impl SpectrumEstimate {
         })
     }
 
+    /// Combine the spectra of two adjacent index ranges (in either order)
+    /// into the estimate over both: the statistics are recomputed from the
+    /// per-trajectory spectra in index order, so they are **bitwise** those
+    /// of one run over the joined range; `wall_time_s` is the sum.
+    ///
+    /// # Errors
+    /// [`AnalysisError::InvalidOption`] if the ranges are not adjacent or
+    /// the options, sampler or seed differ.
+    pub fn merge(&self, other: &SpectrumEstimate) -> Result<SpectrumEstimate, AnalysisError> {
+        if self.options != other.options || self.sampler != other.sampler || self.seed != other.seed
+        {
+            return Err(AnalysisError::invalid(
+                "merge",
+                format!(
+                    "cannot merge spectra of different runs: {:?}, {:?}, seed {} vs {:?}, {:?}, seed {}",
+                    self.options, self.sampler, self.seed, other.options, other.sampler, other.seed
+                ),
+            ));
+        }
+        let end = |e: &SpectrumEstimate| e.first_index + e.n_ics;
+        let (first, second) = if end(self) == other.first_index {
+            (self, other)
+        } else if end(other) == self.first_index {
+            (other, self)
+        } else {
+            return Err(AnalysisError::invalid(
+                "merge",
+                format!(
+                    "index ranges {:?} and {:?} are not adjacent",
+                    self.first_index..end(self),
+                    other.first_index..end(other)
+                ),
+            ));
+        };
+        let mut spectra = first.spectra.clone();
+        spectra.extend_from_slice(&second.spectra);
+        Self::from_spectra(
+            spectra,
+            first.first_index,
+            first.options,
+            first.sampler,
+            first.seed,
+            first.wall_time_s + second.wall_time_s,
+        )
+    }
+
     /// Mean of `λ_i + λ_j` over trajectories with its standard error (for
     /// the pairing rule: `(0, 4)` for the exact spectrum, `(0, 3)` for the
     /// finite-difference one, whose slot 4 is the collapsed flow direction).

@@ -125,6 +125,17 @@ impl Histogram {
             && self.counts.len() == other.counts.len()
     }
 
+    /// The histogram as CSV: one row per bin (`lo,hi,count,density`).
+    #[must_use]
+    pub fn to_csv(&self) -> String {
+        let edges = self.edges();
+        let mut out = String::from("lo,hi,count,density\n");
+        for (i, (c, d)) in self.counts().iter().zip(self.density()).enumerate() {
+            out.push_str(&format!("{},{},{c},{d}\n", edges[i], edges[i + 1]));
+        }
+        out
+    }
+
     /// Lower edge of the first bin.
     pub fn lo(&self) -> f64 {
         self.lo

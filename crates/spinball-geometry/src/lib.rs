@@ -53,6 +53,9 @@ pub mod shape;
 pub mod sinai;
 pub mod stadium;
 pub mod table;
+#[cfg(feature = "table-file")]
+#[cfg_attr(docsrs, doc(cfg(feature = "table-file")))]
+pub mod table_file;
 
 pub use aabb::Aabb;
 pub use arc::{ArcSegment, cast_concave_circle, cast_convex_circle};
@@ -68,5 +71,7 @@ pub use shape::Shape;
 pub use sinai::Sinai;
 pub use stadium::Stadium;
 pub use table::{Built, Table, TableSpecError, TableVisitor};
+#[cfg(feature = "table-file")]
+pub use table_file::{TableFile, TableFileError, WallSpec};
 
 pub use glam::DVec2;

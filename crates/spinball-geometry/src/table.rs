@@ -267,3 +267,79 @@ impl Shape {
         })
     }
 }
+
+/// A rebuilt table is a table: results and ensembles over a table read
+/// from data (a [`Shape`], a table file) run whichever kind it is. Every
+/// method forwards, so exact overrides are kept.
+impl Boundary for Built {
+    fn cast(&self, origin: DVec2, velocity: DVec2) -> Option<Hit> {
+        match self {
+            Built::Table(t) => t.cast(origin, velocity),
+            Built::Segments(t) => t.cast(origin, velocity),
+        }
+    }
+    fn contains(&self, p: DVec2) -> bool {
+        match self {
+            Built::Table(t) => t.contains(p),
+            Built::Segments(t) => t.contains(p),
+        }
+    }
+    fn contains_shrunk(&self, p: DVec2, shrink: f64) -> bool {
+        match self {
+            Built::Table(t) => t.contains_shrunk(p, shrink),
+            Built::Segments(t) => t.contains_shrunk(p, shrink),
+        }
+    }
+    fn aabb(&self) -> Aabb {
+        match self {
+            Built::Table(t) => t.aabb(),
+            Built::Segments(t) => t.aabb(),
+        }
+    }
+    fn reference_point(&self) -> DVec2 {
+        match self {
+            Built::Table(t) => t.reference_point(),
+            Built::Segments(t) => t.reference_point(),
+        }
+    }
+    fn perimeter(&self) -> f64 {
+        match self {
+            Built::Table(t) => t.perimeter(),
+            Built::Segments(t) => t.perimeter(),
+        }
+    }
+    fn area(&self) -> f64 {
+        match self {
+            Built::Table(t) => t.area(),
+            Built::Segments(t) => t.area(),
+        }
+    }
+    fn curved_length(&self) -> f64 {
+        match self {
+            Built::Table(t) => t.curved_length(),
+            Built::Segments(t) => t.curved_length(),
+        }
+    }
+    fn shape(&self) -> Option<Shape> {
+        match self {
+            Built::Table(t) => t.shape(),
+            Built::Segments(t) => t.shape(),
+        }
+    }
+    fn length_scale(&self) -> f64 {
+        match self {
+            Built::Table(t) => t.length_scale(),
+            Built::Segments(t) => t.length_scale(),
+        }
+    }
+}
+
+impl fmt::Display for Built {
+    /// The table's spec string, or `segments(N walls)`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.shape() {
+            Some(shape) => shape.fmt(f),
+            None => Ok(()),
+        }
+    }
+}

@@ -9,7 +9,7 @@
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use glam::DVec2;
-use spinball_geometry::{Circle, Rectangle, Segment, SegmentTable, Sinai, Stadium, Table};
+use spinball_geometry::{Built, Circle, Rectangle, Segment, SegmentTable, Sinai, Stadium, Table};
 
 /// Points per full turn when sampling an arc (every half degree).
 pub const ARC_POINTS_PER_TURN: usize = 720;
@@ -268,6 +268,15 @@ impl ToOutline for Table {
             Table::Rectangle(t) => t.outline(),
             Table::Stadium(t) => t.outline(),
             Table::Sinai(t) => t.outline(),
+        }
+    }
+}
+
+impl ToOutline for Built {
+    fn outline(&self) -> Outline {
+        match self {
+            Built::Table(t) => t.outline(),
+            Built::Segments(t) => t.outline(),
         }
     }
 }

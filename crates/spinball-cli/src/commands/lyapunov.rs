@@ -1,0 +1,232 @@
+//! `spinball lyapunov`: λ at one α or a list, over the whole ensemble or
+//! one shard, with checkpoints and resumption.
+
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+use clap::Args;
+use spinball_analysis::{LyapunovEstimate, PartialRun, TrajectoryStats};
+
+use crate::documents::{PartialDocument, write_json};
+use crate::error::CliError;
+use crate::output::OutputArgs;
+use crate::run_args::RunArgs;
+use crate::watch::{Watch, deadline, progress_bar, stop_flag};
+
+/// Checkpoint and resumption options.
+#[derive(Debug, Clone, Args)]
+pub struct CheckpointArgs {
+    /// Where finished trajectories are saved while the run goes (default:
+    /// the --json path with `.partial` appended).
+    #[arg(long)]
+    pub checkpoint: Option<PathBuf>,
+    /// Continue the run saved in the checkpoint instead of starting over.
+    #[arg(long)]
+    pub resume: bool,
+    /// Stop (and save) after this many seconds, e.g. shortly before a
+    /// job's time limit.
+    #[arg(long, value_name = "SECONDS")]
+    pub time_limit: Option<f64>,
+    /// Save the checkpoint at most this often while running.
+    #[arg(long, value_name = "SECONDS", default_value_t = 60.0)]
+    pub checkpoint_every: f64,
+}
+
+/// The arguments of `spinball lyapunov`.
+#[derive(Debug, Clone, Args)]
+pub struct LyapunovArgs {
+    #[command(flatten)]
+    pub run: RunArgs,
+    #[command(flatten)]
+    pub out: OutputArgs,
+    #[command(flatten)]
+    pub checkpoint: CheckpointArgs,
+}
+
+/// What a run gave: the estimates of a whole run, or a shard's partial
+/// result (already written).
+pub enum Outcome {
+    /// One estimate per α.
+    Finished(Vec<LyapunovEstimate>),
+    /// A shard's pieces, written to --json.
+    Shard,
+}
+
+/// Run the ensembles of `run`, saving to the checkpoint as they go.
+///
+/// # Errors
+/// [`CliError`]: bad options (2), a failed run (1), an interruption (3).
+pub fn run_ensembles(
+    run: &RunArgs,
+    out: &OutputArgs,
+    ck: &CheckpointArgs,
+) -> Result<Outcome, CliError> {
+    let ensembles = run.ensembles()?;
+    let shard = run.shard();
+    let total = 0..run.ics;
+    if shard.count > 1 && out.json.is_none() {
+        return Err(CliError::Usage(
+            "--shard needs --json: the partial result goes there for `spinball merge`".into(),
+        ));
+    }
+    if !(ck.checkpoint_every.is_finite() && ck.checkpoint_every >= 0.0) {
+        return Err(CliError::Usage(format!(
+            "--checkpoint-every {}: must be a number of seconds >= 0",
+            ck.checkpoint_every
+        )));
+    }
+    let checkpoint = ck.checkpoint.clone().or_else(|| {
+        out.json.as_ref().map(|p| {
+            let mut s = p.as_os_str().to_owned();
+            s.push(".partial");
+            PathBuf::from(s)
+        })
+    });
+    let mut doc = if ck.resume {
+        let path = checkpoint.as_ref().ok_or_else(|| {
+            CliError::Usage("--resume needs --checkpoint or --json (to find the checkpoint)".into())
+        })?;
+        let doc = PartialDocument::read(path)?;
+        if doc.shard != shard || doc.total != total || doc.points.len() > ensembles.len() {
+            return Err(CliError::Usage(format!(
+                "{} is the checkpoint of another run (shard {} of {:?}); resume with the command that wrote it",
+                path.display(),
+                doc.shard,
+                doc.total
+            )));
+        }
+        doc
+    } else {
+        PartialDocument::new(shard, total)
+    };
+    let deadline = deadline(ck.time_limit)?;
+    let stop = stop_flag();
+    let bar = progress_bar(out.quiet);
+    let every = Duration::from_secs_f64(ck.checkpoint_every);
+    for (i, ensemble) in ensembles.iter().enumerate() {
+        let resume = doc.points.get(i).cloned();
+        let mut current = resume
+            .clone()
+            .unwrap_or_else(|| PartialRun::new(ensemble.provenance(), ensemble.indices.clone()));
+        let mut saved = Instant::now();
+        let result = {
+            let doc = &mut doc;
+            let current = &mut current;
+            let checkpoint = checkpoint.as_deref();
+            let mut keep = |done: &[TrajectoryStats]| -> Result<(), CliError> {
+                current.extend(done).map_err(CliError::failed)?;
+                if let Some(path) = checkpoint
+                    && saved.elapsed() >= every
+                {
+                    save(doc, i, current, path)?;
+                    saved = Instant::now();
+                }
+                Ok(())
+            };
+            let mut watch = Watch::new(&bar, &stop, deadline, &mut keep);
+            let result = ensemble.run_partial(resume, &mut watch);
+            (result, watch.stopped)
+        };
+        match result {
+            (Ok(part), None) => {
+                set_point(&mut doc, i, part);
+            }
+            (Ok(part), Some(why)) => {
+                set_point(&mut doc, i, part);
+                bar.abandon();
+                return Err(interrupted(why, &doc, checkpoint));
+            }
+            (Err(e), why) => {
+                // Keep what finished before the failure.
+                set_point(&mut doc, i, current);
+                bar.abandon();
+                if let Some(path) = &checkpoint {
+                    write_json(path, &doc)?;
+                }
+                return Err(why.unwrap_or_else(|| CliError::failed(e)));
+            }
+        }
+    }
+    bar.finish_and_clear();
+    if shard.count > 1 {
+        let path = out.json.as_ref().expect("checked above");
+        write_json(path, &doc)?;
+        remove_checkpoint(checkpoint.as_deref(), path);
+        if !out.quiet {
+            println!(
+                "shard {shard}: initial conditions {:?} of {:?} done; wrote {} (combine the shards with `spinball merge`)",
+                shard.range(doc.total.clone()),
+                doc.total,
+                path.display()
+            );
+        }
+        return Ok(Outcome::Shard);
+    }
+    let estimates = doc
+        .points
+        .iter()
+        .map(PartialRun::estimate)
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(CliError::failed)?;
+    if let Some(path) = &out.json {
+        remove_checkpoint(checkpoint.as_deref(), path);
+    }
+    Ok(Outcome::Finished(estimates))
+}
+
+fn set_point(doc: &mut PartialDocument, i: usize, part: PartialRun) {
+    if i < doc.points.len() {
+        doc.points[i] = part;
+    } else {
+        doc.points.push(part);
+    }
+}
+
+/// Save the document with point `i` as `current`.
+fn save(
+    doc: &PartialDocument,
+    i: usize,
+    current: &PartialRun,
+    path: &std::path::Path,
+) -> Result<(), CliError> {
+    let mut snapshot = doc.clone();
+    set_point(&mut snapshot, i, current.clone());
+    write_json(path, &snapshot)
+}
+
+/// The error of a stopped run, after saving what it finished.
+fn interrupted(why: CliError, doc: &PartialDocument, checkpoint: Option<PathBuf>) -> CliError {
+    match why {
+        CliError::Interrupted { .. } => match checkpoint {
+            Some(path) => match write_json(&path, doc) {
+                Ok(()) => CliError::Interrupted {
+                    checkpoint: Some(path),
+                },
+                Err(e) => e,
+            },
+            None => CliError::Interrupted { checkpoint: None },
+        },
+        other => other,
+    }
+}
+
+/// The checkpoint is not needed once the result is written (unless it is
+/// the result's own path).
+fn remove_checkpoint(checkpoint: Option<&std::path::Path>, result: &std::path::Path) {
+    if let Some(c) = checkpoint
+        && c != result
+    {
+        let _ = std::fs::remove_file(c);
+    }
+}
+
+/// `spinball lyapunov`.
+///
+/// # Errors
+/// As [`run_ensembles`]; an output that cannot be written.
+pub fn lyapunov(args: &LyapunovArgs) -> Result<(), CliError> {
+    match run_ensembles(&args.run, &args.out, &args.checkpoint)? {
+        Outcome::Finished(estimates) => args.out.write_results(&estimates),
+        Outcome::Shard => Ok(()),
+    }
+}

@@ -1,0 +1,10 @@
+//! One module per subcommand; each parses nothing itself beyond its
+//! arguments and calls the library.
+
+pub mod ftle;
+pub mod lyapunov;
+pub mod merge;
+pub mod slurm;
+pub mod spectrum;
+pub mod table;
+pub mod trajectory;

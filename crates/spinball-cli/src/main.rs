@@ -1,0 +1,82 @@
+//! `spinball`: spinning billiards from the command line.
+//!
+//! Lyapunov exponents over ensembles of initial conditions (`lyapunov`),
+//! their distribution (`ftle`), the full spectrum (`spectrum`), single
+//! trajectories (`trajectory`), tables (`table`), and campaigns on a
+//! cluster: every ensemble command runs one shard with `--shard K/N`,
+//! `merge` combines the shards into the unsharded result bitwise, `slurm`
+//! writes the job array. Tables are built-in specs or table files (TOML or
+//! JSON). Exit codes: 0 done, 1 the run failed, 2 bad usage, 3 interrupted
+//! (the checkpoint is saved; rerun with `--resume`).
+
+#![forbid(unsafe_code)]
+
+mod commands;
+mod documents;
+mod error;
+mod output;
+mod run_args;
+mod table_arg;
+mod watch;
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+use crate::commands::ftle::{FtleArgs, ftle};
+use crate::commands::lyapunov::{LyapunovArgs, lyapunov};
+use crate::commands::merge::{MergeArgs, merge};
+use crate::commands::slurm::{SlurmArgs, slurm};
+use crate::commands::spectrum::{SpectrumArgs, spectrum};
+use crate::commands::table::{TableArgs, table};
+use crate::commands::trajectory::{TrajectoryArgs, trajectory};
+
+/// Spinning billiards: chaos indicators with honest error bars.
+#[derive(Debug, Parser)]
+#[command(name = "spinball", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// The largest Lyapunov exponent λ at one α or a list (mean, SEM,
+    /// median, chaotic fraction, per-IC values).
+    Lyapunov(Box<LyapunovArgs>),
+    /// The distribution of finite-time exponents: per-IC values and a
+    /// histogram, beside λ.
+    Ftle(Box<FtleArgs>),
+    /// The full Lyapunov spectrum (five exponents) of an ensemble.
+    Spectrum(Box<SpectrumArgs>),
+    /// The collisions of one start, as CSV or NPY.
+    Trajectory(Box<TrajectoryArgs>),
+    /// Read a table (spec or file): describe it, validate it, draw it.
+    Table(TableArgs),
+    /// Combine the partial results of a sharded run into the unsharded
+    /// result (bitwise).
+    Merge(MergeArgs),
+    /// Write the SLURM job array (tables × α × shards) and merge job of a
+    /// campaign.
+    Slurm(Box<SlurmArgs>),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match &cli.command {
+        Command::Lyapunov(a) => lyapunov(a),
+        Command::Ftle(a) => ftle(a),
+        Command::Spectrum(a) => spectrum(a),
+        Command::Trajectory(a) => trajectory(a),
+        Command::Table(a) => table(a),
+        Command::Merge(a) => merge(a),
+        Command::Slurm(a) => slurm(a),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("spinball: {e}");
+            e.code()
+        }
+    }
+}

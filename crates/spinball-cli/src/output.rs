@@ -1,0 +1,102 @@
+//! Where results go: JSON (with full provenance), CSV (one row per α) and
+//! NPY (per-initial-condition exponents, for `numpy.load`).
+
+use std::fs;
+use std::io::BufWriter;
+use std::path::{Path, PathBuf};
+
+use clap::Args;
+use npyz::WriterBuilder;
+use spinball_analysis::{LyapunovEstimate, csv_string};
+
+use crate::documents::{ResultDocument, write_json};
+use crate::error::CliError;
+
+/// Output options.
+#[derive(Debug, Clone, Args)]
+pub struct OutputArgs {
+    /// Write the result as JSON (every statistic, the provenance and the
+    /// per-initial-condition values). A sharded run writes its partial
+    /// result here.
+    #[arg(long)]
+    pub json: Option<PathBuf>,
+    /// Write one CSV row per α.
+    #[arg(long)]
+    pub csv: Option<PathBuf>,
+    /// Write the per-initial-condition exponents as an NPY array of shape
+    /// (number of α, ICs), float64.
+    #[arg(long)]
+    pub npy: Option<PathBuf>,
+    /// No progress bar and no table on stdout.
+    #[arg(long, short)]
+    pub quiet: bool,
+}
+
+/// Write `values` (row-major, `shape`) as a float64 NPY file.
+///
+/// # Errors
+/// [`CliError::Failed`] if it cannot be written.
+pub fn write_npy(path: &Path, shape: &[u64], values: &[f64]) -> Result<(), CliError> {
+    let fail =
+        |e: std::io::Error| CliError::Failed(format!("cannot write {}: {e}", path.display()));
+    let file = fs::File::create(path).map_err(fail)?;
+    let mut w = npyz::WriteOptions::new()
+        .default_dtype()
+        .shape(shape)
+        .writer(BufWriter::new(file))
+        .begin_nd()
+        .map_err(fail)?;
+    w.extend(values.iter().copied()).map_err(fail)?;
+    w.finish().map_err(fail)
+}
+
+/// Write text to `path`.
+///
+/// # Errors
+/// [`CliError::Failed`] if it cannot be written.
+pub fn write_text(path: &Path, text: &str) -> Result<(), CliError> {
+    fs::write(path, text)
+        .map_err(|e| CliError::Failed(format!("cannot write {}: {e}", path.display())))
+}
+
+impl OutputArgs {
+    /// Write finished estimates to every output asked for, and print a
+    /// table on stdout unless quiet.
+    ///
+    /// # Errors
+    /// [`CliError::Failed`] for an output that cannot be written.
+    pub fn write_results(&self, estimates: &[LyapunovEstimate]) -> Result<(), CliError> {
+        if !self.quiet {
+            println!(
+                "{:>10} {:>11} {:>10} {:>11} {:>7} {:>8} {:>9}",
+                "alpha", "lambda", "SEM", "median", "f_ch", "ICs", "time/s"
+            );
+            for e in estimates {
+                println!(
+                    "{:>10} {:>11.6} {:>10.6} {:>11.6} {:>7.3} {:>8} {:>9.2}",
+                    e.alpha, e.mean, e.sem, e.median, e.chaotic_fraction, e.n_ics, e.wall_time_s
+                );
+            }
+        }
+        if let Some(path) = &self.json {
+            write_json(path, &ResultDocument::new(estimates.to_vec()))?;
+        }
+        if let Some(path) = &self.csv {
+            write_text(path, &csv_string(estimates).map_err(CliError::failed)?)?;
+        }
+        if let Some(path) = &self.npy {
+            let n = estimates.first().map_or(0, |e| e.trajectories.len());
+            if estimates.iter().any(|e| e.trajectories.len() != n) {
+                return Err(CliError::Failed(
+                    "--npy needs the same number of initial conditions at every α".into(),
+                ));
+            }
+            let values: Vec<f64> = estimates
+                .iter()
+                .flat_map(|e| e.trajectories.iter().map(|t| t.exponent))
+                .collect();
+            write_npy(path, &[estimates.len() as u64, n as u64], &values)?;
+        }
+        Ok(())
+    }
+}

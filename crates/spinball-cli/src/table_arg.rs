@@ -1,0 +1,30 @@
+//! The `--table` argument: a built-in table's spec or a table file.
+
+use std::path::Path;
+
+use spinball_geometry::{Built, Table, TableFile};
+
+use crate::error::CliError;
+
+/// Read `arg`: a path ending in `.toml` or `.json` is a table file, anything
+/// else a built-in spec (`stadium:a=1`, `sinai:L=2,R=1`, `circle`,
+/// `rectangle:L=1,H=1`).
+///
+/// # Errors
+/// [`CliError::Usage`] with the parser's or the table's message.
+pub fn read_table(arg: &str) -> Result<Built, CliError> {
+    let is_file = Path::new(arg)
+        .extension()
+        .is_some_and(|e| e == "toml" || e == "json");
+    if is_file {
+        TableFile::read(arg)
+            .and_then(|f| f.build())
+            .map_err(CliError::usage)
+    } else {
+        arg.parse::<Table>().map(Built::Table).map_err(|e| {
+            CliError::Usage(format!(
+                "--table {arg}: {e} (or give a .toml/.json table file)"
+            ))
+        })
+    }
+}
