@@ -274,19 +274,10 @@ impl LyapunovEstimate {
         if self.version != other.version {
             return mismatch("crate versions", &self.version, &other.version);
         }
-        let (first, second) = if self.indices().end == other.first_index {
+        let (first, second) = if in_order(&self.indices(), &other.indices())? {
             (self, other)
-        } else if other.indices().end == self.first_index {
-            (other, self)
         } else {
-            return Err(AnalysisError::invalid(
-                "merge",
-                format!(
-                    "index ranges {:?} and {:?} are not adjacent",
-                    self.indices(),
-                    other.indices()
-                ),
-            ));
+            (other, self)
         };
         let mut merged = first.clone();
         merged.trajectories.extend_from_slice(&second.trajectories);
@@ -362,5 +353,23 @@ impl fmt::Display for LyapunovEstimate {
             self.collisions_per_ic,
             self.wall_time_s
         )
+    }
+}
+
+/// Whether index range `a` ends where `b` starts (`true`) or `b` ends where
+/// `a` starts (`false`): the two orders in which results can be merged.
+///
+/// # Errors
+/// [`AnalysisError::InvalidOption`] if the ranges are not adjacent.
+pub(crate) fn in_order(a: &Range<u64>, b: &Range<u64>) -> Result<bool, AnalysisError> {
+    if a.end == b.start {
+        Ok(true)
+    } else if b.end == a.start {
+        Ok(false)
+    } else {
+        Err(AnalysisError::invalid(
+            "merge",
+            format!("index ranges {a:?} and {b:?} are not adjacent"),
+        ))
     }
 }

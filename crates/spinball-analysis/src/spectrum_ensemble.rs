@@ -26,6 +26,7 @@ use spinball_lanes::{CHUNK, LaneBilliard, LanesError};
 use crate::error::AnalysisError;
 use crate::lyapunov::Method;
 use crate::parallel::{Threads, map_chunks, map_indices};
+use crate::result::in_order;
 use crate::spectrum::{Spectrum, SpectrumOptions, lyapunov_spectrum, random_frame};
 use crate::stats::Accumulator;
 
@@ -134,20 +135,11 @@ impl SpectrumEstimate {
                 ),
             ));
         }
-        let end = |e: &SpectrumEstimate| e.first_index + e.n_ics;
-        let (first, second) = if end(self) == other.first_index {
+        let range = |e: &SpectrumEstimate| e.first_index..e.first_index + e.n_ics;
+        let (first, second) = if in_order(&range(self), &range(other))? {
             (self, other)
-        } else if end(other) == self.first_index {
-            (other, self)
         } else {
-            return Err(AnalysisError::invalid(
-                "merge",
-                format!(
-                    "index ranges {:?} and {:?} are not adjacent",
-                    self.first_index..end(self),
-                    other.first_index..end(other)
-                ),
-            ));
+            (other, self)
         };
         let mut spectra = first.spectra.clone();
         spectra.extend_from_slice(&second.spectra);
