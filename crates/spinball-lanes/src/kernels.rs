@@ -438,11 +438,9 @@ mod tests {
     /// docs/PERFORMANCE.md; run with `--nocapture` to see them.
     #[test]
     fn operation_counts_per_step() {
-        use std::f64::consts::{FRAC_PI_2, PI, TAU};
+        use spinball_geometry::Sinai;
 
-        use spinball_geometry::{ArcSegment, DVec2, LineSegment, Segment, SegmentTable, Sinai};
-
-        use crate::geom::{LaneSegments, LaneSinai};
+        use crate::geom::{LaneSegments, LaneSinai, segment_tables};
 
         let law = SpinLaw::new(0.5).unwrap();
         let l = Law::new(&law);
@@ -459,45 +457,17 @@ mod tests {
         let c = counts("sinai", &sinai, &LaneSinai::new(2.0, 1.0), &l, &law);
         assert_eq!(c, [[1.0, 1.0], [4.0, 3.0], [2.0, 1.0], [7.0, 6.0]]);
 
-        let p = DVec2::new;
-        let line = |a, b| Segment::Line(LineSegment::new(a, b).unwrap());
-        let arc = |c, r, s, w| Segment::Arc(ArcSegment::new(c, r, s, w).unwrap());
-        let seg_stadium = SegmentTable::new(vec![
-            line(p(-1.0, -1.0), p(1.0, -1.0)),
-            arc(p(1.0, 0.0), 1.0, -FRAC_PI_2, PI),
-            line(p(1.0, 1.0), p(-1.0, 1.0)),
-            arc(p(-1.0, 0.0), 1.0, FRAC_PI_2, PI),
-        ])
-        .unwrap();
+        let seg_stadium = segment_tables::stadium(1.0);
         let ls = LaneSegments::new(&seg_stadium);
         let c = counts("seg-stadium", &seg_stadium, &ls.view::<true>(), &l, &law);
         // With arcs: the arcs' shared 1/|v|² and the one division of the
         // chosen flat wall; a square root per arc.
         assert_eq!(c[0], [2.0, 2.0]);
-        let (r, w, h) = (1.0, 0.3, 1.0);
-        let mushroom = SegmentTable::new(vec![
-            line(p(-w, -h), p(w, -h)),
-            line(p(w, -h), p(w, 0.0)),
-            line(p(w, 0.0), p(r, 0.0)),
-            arc(DVec2::ZERO, r, 0.0, PI),
-            line(p(-r, 0.0), p(-w, 0.0)),
-            line(p(-w, 0.0), p(-w, -h)),
-        ])
-        .unwrap();
+        let mushroom = segment_tables::mushroom(1.0, 0.3, 1.0);
         let lm = LaneSegments::new(&mushroom);
         let c = counts("mushroom", &mushroom, &lm.view::<true>(), &l, &law);
         assert_eq!(c[0], [2.0, 1.0]);
-        let v: Vec<DVec2> = (0..20)
-            .map(|k| {
-                let radius = if k % 2 == 0 {
-                    1.0
-                } else {
-                    0.8 + 0.01 * k as f64
-                };
-                DVec2::from_angle(TAU * k as f64 / 20.0) * radius
-            })
-            .collect();
-        let gon = SegmentTable::polygon(&v).unwrap();
+        let gon = segment_tables::alternating_twenty_gon();
         let lg = LaneSegments::new(&gon);
         let c = counts("20-gon", &gon, &lg.view::<false>(), &l, &law);
         // Without arcs: one division per cast, however many walls.

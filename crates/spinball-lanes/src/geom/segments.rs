@@ -480,8 +480,9 @@ impl<const CURVED: bool> Geom for Segments<'_, CURVED> {
     }
 }
 
+/// Tables built from segments for the tests here and in the kernels.
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use std::f64::consts::{FRAC_PI_2, PI};
 
     use rand::{Rng, SeedableRng};
@@ -500,7 +501,7 @@ mod tests {
     }
 
     /// The stadium of half-length `a`: bottom, right cap, top, left cap.
-    fn stadium(a: f64) -> SegmentTable {
+    pub(crate) fn stadium(a: f64) -> SegmentTable {
         SegmentTable::new(vec![
             line(d(-a, -1.0), d(a, -1.0)),
             arc(d(a, 0.0), 1.0, -FRAC_PI_2, PI),
@@ -526,7 +527,7 @@ mod tests {
 
     /// The mushroom of the `SegmentTable` docs: cap radius `r`, stem
     /// half-width `w`, stem height `h`.
-    fn mushroom(r: f64, w: f64, h: f64) -> SegmentTable {
+    pub(crate) fn mushroom(r: f64, w: f64, h: f64) -> SegmentTable {
         SegmentTable::new(vec![
             line(d(-w, -h), d(w, -h)),
             line(d(w, -h), d(w, 0.0)),
@@ -536,6 +537,22 @@ mod tests {
             line(d(-w, 0.0), d(-w, -h)),
         ])
         .unwrap()
+    }
+
+    /// A star-shaped 20-gon with alternating radii (1 and 0.81..0.99), no
+    /// fixed seed needed: the operation counts' 20-segment table.
+    pub(crate) fn alternating_twenty_gon() -> SegmentTable {
+        let v: Vec<DVec2> = (0..20)
+            .map(|k| {
+                let radius = if k % 2 == 0 {
+                    1.0
+                } else {
+                    0.8 + 0.01 * k as f64
+                };
+                DVec2::from_angle(TAU * k as f64 / 20.0) * radius
+            })
+            .collect();
+        SegmentTable::polygon(&v).unwrap()
     }
 
     fn l_shape() -> SegmentTable {
@@ -752,12 +769,11 @@ mod tests {
 
 #[cfg(test)]
 mod counts {
-    use std::f64::consts::{FRAC_PI_2, PI};
-
     use rand::{Rng, SeedableRng};
     use rand_pcg::Pcg64;
     use spinball_geometry::{Boundary, DVec2, Stadium};
 
+    use super::tests::{alternating_twenty_gon, mushroom, stadium};
     use super::*;
     use crate::geom::LaneStadium;
     use crate::lanes::counted::{Counted, take};
@@ -788,41 +804,13 @@ mod counts {
 
     #[test]
     fn operation_counts_per_cast() {
-        let p = DVec2::new;
-        let line = |a, b| Segment::Line(LineSegment::new(a, b).unwrap());
-        let arc = |c, r, s, w| Segment::Arc(ArcSegment::new(c, r, s, w).unwrap());
         let st = Stadium::new(1.0).unwrap();
         per_cast("stadium", &st, &LaneStadium::new(1.0));
-        let seg = SegmentTable::new(vec![
-            line(p(-1.0, -1.0), p(1.0, -1.0)),
-            arc(p(1.0, 0.0), 1.0, -FRAC_PI_2, PI),
-            line(p(1.0, 1.0), p(-1.0, 1.0)),
-            arc(p(-1.0, 0.0), 1.0, FRAC_PI_2, PI),
-        ])
-        .unwrap();
+        let seg = stadium(1.0);
         per_cast("stadium-seg", &seg, &LaneSegments::new(&seg).view::<true>());
-        let (r, w, h) = (1.0, 0.3, 1.0);
-        let m = SegmentTable::new(vec![
-            line(p(-w, -h), p(w, -h)),
-            line(p(w, -h), p(w, 0.0)),
-            line(p(w, 0.0), p(r, 0.0)),
-            arc(DVec2::ZERO, r, 0.0, PI),
-            line(p(-r, 0.0), p(-w, 0.0)),
-            line(p(-w, 0.0), p(-w, -h)),
-        ])
-        .unwrap();
+        let m = mushroom(1.0, 0.3, 1.0);
         per_cast("mushroom", &m, &LaneSegments::new(&m).view::<true>());
-        let v: Vec<DVec2> = (0..20)
-            .map(|k| {
-                let radius = if k % 2 == 0 {
-                    1.0
-                } else {
-                    0.8 + 0.01 * k as f64
-                };
-                DVec2::from_angle(TAU * k as f64 / 20.0) * radius
-            })
-            .collect();
-        let g = SegmentTable::polygon(&v).unwrap();
+        let g = alternating_twenty_gon();
         per_cast("20-gon", &g, &LaneSegments::new(&g).view::<false>());
     }
 }
