@@ -155,17 +155,9 @@ pub fn cast_concave_circle(
     velocity: DVec2,
 ) -> Option<WallHit> {
     let root = concave_root(center, radius, origin, velocity)?;
-    // 1/a only needs the velocity, so it is computed while the square root
-    // is still running.
-    let inv_a = 1.0 / root.a;
-    let time = (root.num * inv_a).max(0.0);
-    let (point, radial) = contact(center, root.d + velocity * time, radius);
-    Some(WallHit {
-        time,
-        point,
-        normal: -radial,
-        along: 0.0,
-    })
+    let mut hit = root.land(center, radius, velocity);
+    hit.normal = -hit.normal;
+    Some(hit)
 }
 
 /// A circle root as an undivided fraction: the flight time is `num / a`
@@ -175,6 +167,25 @@ pub(crate) struct Root {
     pub num: f64,
     pub a: f64,
     pub d: DVec2,
+}
+
+impl Root {
+    /// The hit of a circle cast: flight time `num · (1/a)` clamped at 0
+    /// (`1/a` only needs the velocity, so it is computed while the square
+    /// root is still running), contact snapped onto the circle, normal the
+    /// outward radial direction (a concave cast negates it).
+    #[inline]
+    fn land(&self, center: DVec2, radius: f64, velocity: DVec2) -> WallHit {
+        let inv_a = 1.0 / self.a;
+        let time = (self.num * inv_a).max(0.0);
+        let (point, radial) = contact(center, self.d + velocity * time, radius);
+        WallHit {
+            time,
+            point,
+            normal: radial,
+            along: 0.0,
+        }
+    }
 }
 
 /// The larger root of `|d + v t| = R` for a ball inside the circle, if it
@@ -272,14 +283,5 @@ pub fn cast_convex_circle(
     velocity: DVec2,
 ) -> Option<WallHit> {
     let root = convex_root(center, radius, origin, velocity)?;
-    // 1/a computed off the critical path.
-    let inv_a = 1.0 / root.a;
-    let time = (root.num * inv_a).max(0.0);
-    let (point, radial) = contact(center, root.d + velocity * time, radius);
-    Some(WallHit {
-        time,
-        point,
-        normal: radial,
-        along: 0.0,
-    })
+    Some(root.land(center, radius, velocity))
 }
