@@ -154,6 +154,49 @@ pub fn cast_concave_circle(
     origin: DVec2,
     velocity: DVec2,
 ) -> Option<WallHit> {
+    let root = concave_root(center, radius, origin, velocity)?;
+    let mut hit = root.land(center, radius, velocity);
+    hit.normal = -hit.normal;
+    Some(hit)
+}
+
+/// A circle root as an undivided fraction: the flight time is `num / a`
+/// (before clamping at 0), with `d` the ball's offset from the centre.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Root {
+    pub num: f64,
+    pub a: f64,
+    pub d: DVec2,
+}
+
+impl Root {
+    /// The hit of a circle cast: flight time `num · (1/a)` clamped at 0
+    /// (`1/a` only needs the velocity, so it is computed while the square
+    /// root is still running), contact snapped onto the circle, normal the
+    /// outward radial direction (a concave cast negates it).
+    #[inline]
+    fn land(&self, center: DVec2, radius: f64, velocity: DVec2) -> WallHit {
+        let inv_a = 1.0 / self.a;
+        let time = (self.num * inv_a).max(0.0);
+        let (point, radial) = contact(center, self.d + velocity * time, radius);
+        WallHit {
+            time,
+            point,
+            normal: radial,
+            along: 0.0,
+        }
+    }
+}
+
+/// The larger root of `|d + v t| = R` for a ball inside the circle, if it
+/// leaves through it (see [`cast_concave_circle`]), undivided.
+#[inline]
+pub(crate) fn concave_root(
+    center: DVec2,
+    radius: f64,
+    origin: DVec2,
+    velocity: DVec2,
+) -> Option<Root> {
     let d = origin - center;
     let a = velocity.length_squared();
     let b = d.dot(velocity);
@@ -173,16 +216,39 @@ pub fn cast_concave_circle(
     // Larger root of a t² + 2 b t + c. When b > 0 and c ≈ 0 (a ball on the
     // circle moving out) this cancels, but only in absolute terms of order
     // ε|d|/|v|, which is the accuracy of the contact anyway.
-    // 1/a only needs the velocity, so it is computed while the square root
-    // is still running.
-    let inv_a = 1.0 / a;
-    let time = ((disc.sqrt() - b) * inv_a).max(0.0);
-    let (point, radial) = contact(center, d + velocity * time, radius);
-    Some(WallHit {
-        time,
-        point,
-        normal: -radial,
-        along: 0.0,
+    Some(Root {
+        num: disc.sqrt() - b,
+        a,
+        d,
+    })
+}
+
+/// The smaller root of `|d + v t| = R` for a ball outside the circle moving
+/// towards it (see [`cast_convex_circle`]), undivided.
+#[inline]
+pub(crate) fn convex_root(
+    center: DVec2,
+    radius: f64,
+    origin: DVec2,
+    velocity: DVec2,
+) -> Option<Root> {
+    let d = origin - center;
+    let b = d.dot(velocity);
+    if !(b < 0.0) {
+        return None;
+    }
+    let a = velocity.length_squared();
+    let c = d.length_squared() - radius * radius;
+    let disc = b * b - a * c;
+    if !(disc > 0.0) {
+        return None;
+    }
+    // For b < 0 the cancellation of -b - sqrt(disc) when c ≈ 0 is absolute,
+    // of order ε|d|/|v|, the accuracy of the contact anyway.
+    Some(Root {
+        num: -b - disc.sqrt(),
+        a,
+        d,
     })
 }
 
@@ -194,7 +260,7 @@ pub fn cast_concave_circle(
 /// clamped flight time) is projected onto the circle exactly, in a branch the
 /// processor predicts away.
 #[inline]
-fn contact(center: DVec2, r: DVec2, radius: f64) -> (DVec2, DVec2) {
+pub(crate) fn contact(center: DVec2, r: DVec2, radius: f64) -> (DVec2, DVec2) {
     let inv_radius = 1.0 / radius;
     let rr = r.length_squared() * (inv_radius * inv_radius);
     if (rr - 1.0).abs() < 1e-8 {
@@ -216,27 +282,6 @@ pub fn cast_convex_circle(
     origin: DVec2,
     velocity: DVec2,
 ) -> Option<WallHit> {
-    let d = origin - center;
-    let b = d.dot(velocity);
-    if !(b < 0.0) {
-        return None;
-    }
-    let a = velocity.length_squared();
-    let c = d.length_squared() - radius * radius;
-    let disc = b * b - a * c;
-    if !(disc > 0.0) {
-        return None;
-    }
-    // Smaller root (-b - sqrt(disc))/a with 1/a computed off the critical
-    // path; for b < 0 its cancellation when c ≈ 0 is absolute, of order
-    // ε|d|/|v|, the accuracy of the contact anyway.
-    let inv_a = 1.0 / a;
-    let time = ((-b - disc.sqrt()) * inv_a).max(0.0);
-    let (point, radial) = contact(center, d + velocity * time, radius);
-    Some(WallHit {
-        time,
-        point,
-        normal: radial,
-        along: 0.0,
-    })
+    let root = convex_root(center, radius, origin, velocity)?;
+    Some(root.land(center, radius, velocity))
 }

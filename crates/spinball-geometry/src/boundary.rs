@@ -241,14 +241,3 @@ fn fan<B: Boundary + ?Sized>(table: &B) -> Vec<Hit> {
         })
         .collect()
 }
-
-/// Pick the earlier of two candidate hits; on a tie the first (lower wall id)
-/// wins. Built-in tables list candidates in wall-id order.
-#[inline]
-pub(crate) fn earlier(a: Option<Hit>, b: Option<Hit>) -> Option<Hit> {
-    match (a, b) {
-        (Some(x), Some(y)) => Some(if y.time < x.time { y } else { x }),
-        (x, None) => x,
-        (None, y) => y,
-    }
-}

@@ -21,6 +21,17 @@ pub struct WallHit {
     pub along: f64,
 }
 
+/// A flat wall's flight time as an undivided fraction `dist / speed`
+/// (see [`LineSegment::approach`]): comparing two of them needs no
+/// division (`d₁·s₂ < d₂·s₁`, both speeds positive).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Approach {
+    /// Distance to the wall's line, clamped at 0 (`≥ 0`).
+    pub dist: f64,
+    /// Speed towards the wall, `−(v·n) > 0`.
+    pub speed: f64,
+}
+
 /// A straight wall from `start` to `end`; the table lies to its left.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -95,6 +106,59 @@ impl LineSegment {
             velocity,
             slack,
         )
+    }
+
+    /// Unit direction from start to end (the normal is its left
+    /// perpendicular, `normal = (−dir.y, dir.x)` exactly).
+    #[must_use]
+    pub fn direction(&self) -> DVec2 {
+        self.dir
+    }
+
+    /// Whether and how soon a ball at `origin` with velocity `velocity`
+    /// reaches this wall from the table side, without dividing: the flight
+    /// time is the fraction [`Approach::dist`]` / `[`Approach::speed`].
+    ///
+    /// The same acceptance as [`cast`](Self::cast) (moving into the wall,
+    /// not behind it by more than `slack`, reaching it between its ends
+    /// widened by `slack`) with the end check multiplied through by the
+    /// positive divisor: `along·w ∈ [−slack·w, (length + slack)·w]` where
+    /// `along·w = (rel·dir)·w + (v·dir)·dist`. It differs from `cast`'s
+    /// check only by rounding, far inside `slack`. A table picks the
+    /// earliest wall by comparing these fractions cross-multiplied and
+    /// divides once, for the wall it picked ([`land`](Self::land)).
+    #[inline]
+    #[must_use]
+    pub fn approach(&self, origin: DVec2, velocity: DVec2, slack: f64) -> Option<Approach> {
+        // −(v·n), exactly the negation of `velocity.dot(normal)`.
+        let w = velocity.dot(-self.normal);
+        if !(w > 0.0) {
+            return None;
+        }
+        let rel = origin - self.start;
+        let dist = rel.dot(self.normal);
+        if dist < -slack {
+            return None;
+        }
+        let dist = dist.max(0.0);
+        let along_w = rel.dot(self.dir) * w + velocity.dot(self.dir) * dist;
+        if !(along_w >= -slack * w && along_w <= (self.length + slack) * w) {
+            return None;
+        }
+        Some(Approach { dist, speed: w })
+    }
+
+    /// The contact of a ball at `origin` with velocity `velocity` after
+    /// flying for `time` (the fraction of an [`approach`](Self::approach),
+    /// divided): the point on the wall and its distance `along` it from the
+    /// start, clamped to the wall.
+    #[inline]
+    #[must_use]
+    pub fn land(&self, origin: DVec2, velocity: DVec2, time: f64) -> (DVec2, f64) {
+        let rel = origin - self.start;
+        let along = rel.dot(self.dir) + velocity.dot(self.dir) * time;
+        let along = along.clamp(0.0, self.length);
+        (self.start + self.dir * along, along)
     }
 
     /// Signed distance of `p` from the wall's line, positive on the table side.

@@ -63,9 +63,25 @@ impl Rectangle {
 /// in [`Rectangle`]. Shared with [`Sinai`](crate::Sinai).
 #[inline]
 pub(crate) fn cast_box(l: f64, h: f64, origin: DVec2, v: DVec2) -> Option<Hit> {
-    // Horizontal wall ahead (bottom = 0 or top = 2) and vertical (right = 1
-    // or left = 3); compare the times dy/|v_y| and dx/|v_x| by cross
-    // multiplication and divide once.
+    let ahead = box_ahead(l, h, origin, v)?;
+    land_box(l, h, origin, v, ahead.dist / ahead.speed, ahead.wall)
+}
+
+/// The wall of the box a ball meets first, and its flight time as the
+/// undivided fraction `dist / speed`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct BoxAhead {
+    pub dist: f64,
+    pub speed: f64,
+    pub wall: WallId,
+}
+
+/// The box wall ahead of a ball, without dividing: the horizontal wall ahead
+/// (bottom = 0 or top = 2) and the vertical one (right = 1 or left = 3) are
+/// compared by cross multiplication, `dy/|v_y|` against `dx/|v_x|`, ties to
+/// the lower id. `None` for a ball at rest.
+#[inline]
+pub(crate) fn box_ahead(l: f64, h: f64, origin: DVec2, v: DVec2) -> Option<BoxAhead> {
     let (dy, wall_y) = if v.y > 0.0 {
         (h - origin.y, 2)
     } else {
@@ -80,13 +96,34 @@ pub(crate) fn cast_box(l: f64, h: f64, origin: DVec2, v: DVec2) -> Option<Hit> {
     let (avy, avx) = (v.y.abs(), v.x.abs());
     let (ty, tx) = (dy * avx, dx * avy);
     let use_y = avy > 0.0 && (avx == 0.0 || ty < tx || (ty == tx && wall_y < wall_x));
-    let (time, wall) = if use_y {
-        (dy / avy, wall_y)
+    if use_y {
+        Some(BoxAhead {
+            dist: dy,
+            speed: avy,
+            wall: wall_y,
+        })
     } else if avx > 0.0 {
-        (dx / avx, wall_x)
+        Some(BoxAhead {
+            dist: dx,
+            speed: avx,
+            wall: wall_x,
+        })
     } else {
-        return None;
-    };
+        None
+    }
+}
+
+/// The hit on box wall `wall` after flying for `time` (`None` if the time
+/// is not finite).
+#[inline]
+pub(crate) fn land_box(
+    l: f64,
+    h: f64,
+    origin: DVec2,
+    v: DVec2,
+    time: f64,
+    wall: WallId,
+) -> Option<Hit> {
     if !time.is_finite() {
         return None;
     }

@@ -4,7 +4,7 @@ use glam::DVec2;
 
 use crate::aabb::Aabb;
 use crate::arc::ArcSegment;
-use crate::line::{LineSegment, WallHit};
+use crate::line::LineSegment;
 
 /// One wall of a [`SegmentTable`](crate::SegmentTable).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -43,13 +43,6 @@ impl Segment {
         match self {
             Segment::Line(_) => 0.0,
             Segment::Arc(a) => a.curvature(),
-        }
-    }
-    #[inline]
-    pub(crate) fn cast(&self, origin: DVec2, v: DVec2, slack: f64) -> Option<WallHit> {
-        match self {
-            Segment::Line(l) => l.cast(origin, v, slack),
-            Segment::Arc(a) => a.cast(origin, v, slack),
         }
     }
     /// Twice the signed area between the chord and the wall (zero for a line).

@@ -59,6 +59,27 @@ pub struct SegmentTable {
     perimeter: f64,
     aabb: Aabb,
     slack: f64,
+    /// The order in which the cast visits the flat walls.
+    visits: Vec<FlatVisit>,
+}
+
+/// One step of the order in which [`SegmentTable`]'s cast visits its flat
+/// walls (see [`SegmentTable::flat_visits`]).
+///
+/// Two flat walls whose inward normals are exact opposites (the sides of a
+/// box, of a stadium, of a mushroom's stem) never both face a ball: `v·n`
+/// of one is minus that of the other, and only a wall with `v·n < 0` is hit.
+/// Such a pair is visited as one step, where its later wall stands in id
+/// order, so that a vectorised cast can treat it as one wall whose
+/// constants are chosen per ball; the scalar cast visits in the same order
+/// so that both make the same comparisons.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum FlatVisit {
+    /// One flat wall (its id).
+    One(usize),
+    /// Two flat walls with opposite normals (lower id first).
+    Pair(usize, usize),
 }
 
 impl SegmentTable {
@@ -130,6 +151,7 @@ impl SegmentTable {
         }
         let lens: Vec<usize> = loops.iter().map(|lp| lp.len()).collect();
         let walls: Vec<Segment> = loops.into_iter().flatten().copied().collect();
+        let visits = flat_visits(&walls);
         let mut bases = Vec::with_capacity(walls.len());
         let mut s = 0.0;
         for w in &walls {
@@ -143,6 +165,7 @@ impl SegmentTable {
             perimeter: s,
             aabb,
             slack: 64.0 * f64::EPSILON * scale,
+            visits,
         })
     }
 
@@ -207,36 +230,144 @@ impl SegmentTable {
     pub fn slack(&self) -> f64 {
         self.slack
     }
+
+    /// The order in which [`cast`](Boundary::cast) visits the flat walls:
+    /// every flat wall once, a pair of walls with opposite normals where
+    /// its later wall stands. See [`FlatVisit`].
+    #[must_use]
+    pub fn flat_visits(&self) -> &[FlatVisit] {
+        &self.visits
+    }
+}
+
+/// Pair each flat wall with the first later unpaired flat wall whose normal
+/// is exactly its opposite; list the walls in id order, a pair where its
+/// later wall stands.
+fn flat_visits(walls: &[Segment]) -> Vec<FlatVisit> {
+    let normal = |w: &Segment| match w {
+        Segment::Line(l) => Some(l.normal()),
+        Segment::Arc(_) => None,
+    };
+    let mut partner: Vec<Option<usize>> = vec![None; walls.len()];
+    let mut paired = vec![false; walls.len()];
+    for i in 0..walls.len() {
+        let Some(a) = normal(&walls[i]).filter(|_| !paired[i]) else {
+            continue;
+        };
+        let found = (i + 1..walls.len())
+            .find(|&j| !paired[j] && normal(&walls[j]).is_some_and(|b| a.x == -b.x && a.y == -b.y));
+        if let Some(j) = found {
+            paired[i] = true;
+            paired[j] = true;
+            partner[j] = Some(i);
+        }
+    }
+    (0..walls.len())
+        .filter(|&j| matches!(walls[j], Segment::Line(_)))
+        .filter_map(|j| match partner[j] {
+            Some(i) => Some(FlatVisit::Pair(i, j)),
+            // The earlier wall of a pair is visited with its partner.
+            None if paired[j] => None,
+            None => Some(FlatVisit::One(j)),
+        })
+        .collect()
+}
+
+/// The earliest flat wall so far: its flight time as an undivided fraction.
+#[derive(Clone, Copy)]
+struct Earliest {
+    wall: usize,
+    line: LineSegment,
+    dist: f64,
+    speed: f64,
 }
 
 impl Boundary for SegmentTable {
+    /// The earliest wall, ties to the lower id, with one division: the
+    /// flat walls are compared by their undivided flight times
+    /// ([`LineSegment::approach`], cross-multiplied: `d·s' < d'·s`) in the
+    /// order of [`flat_visits`](SegmentTable::flat_visits), the arcs by
+    /// their flight times in id order (their casts share `1/|v|²`), then
+    /// the earliest arc against the earliest flat wall (`t·s < d`), and the
+    /// flat wall's fraction is divided only if it wins.
     fn cast(&self, origin: DVec2, v: DVec2) -> Option<Hit> {
-        let mut best: Option<(usize, WallHit)> = None;
-        for (i, w) in self.walls.iter().enumerate() {
-            if let Some(h) = w.cast(origin, v, self.slack)
-                && best.is_none_or(|(_, b)| h.time < b.time)
-            {
-                best = Some((i, h));
+        // Is (dist, speed) of wall `id` earlier than `b`, ties to the lower id?
+        let earlier = |id: usize, a: &LineSegment, b: &Option<Earliest>| {
+            let a = a.approach(origin, v, self.slack)?;
+            let take = match b {
+                None => true,
+                Some(b) => {
+                    let (x, y) = (a.dist * b.speed, b.dist * a.speed);
+                    x < y || (x == y && id < b.wall)
+                }
+            };
+            take.then_some(a)
+        };
+        let mut flat: Option<Earliest> = None;
+        for visit in &self.visits {
+            let (first, second) = match *visit {
+                FlatVisit::One(i) => (i, None),
+                FlatVisit::Pair(i, j) => (i, Some(j)),
+            };
+            for id in std::iter::once(first).chain(second) {
+                if let Segment::Line(l) = &self.walls[id]
+                    && let Some(a) = earlier(id, l, &flat)
+                {
+                    flat = Some(Earliest {
+                        wall: id,
+                        line: *l,
+                        dist: a.dist,
+                        speed: a.speed,
+                    });
+                }
             }
         }
-        let (i, h) = best?;
-        let id = i as WallId;
-        let base = self.bases[i];
-        Some(match self.walls[i] {
-            Segment::Line(_) => Hit::new(h.time, h.point, h.normal, 0.0, id, base + h.along),
-            Segment::Arc(a) => Hit::on_circle(
-                h.time,
-                h.point,
-                h.normal,
-                a.curvature(),
+        let mut round: Option<(usize, WallHit)> = None;
+        for (i, w) in self.walls.iter().enumerate() {
+            if let Segment::Arc(a) = w
+                && let Some(h) = a.cast(origin, v, self.slack)
+                && round.is_none_or(|(_, b)| h.time < b.time)
+            {
+                round = Some((i, h));
+            }
+        }
+        let arc_wins = match (round, flat) {
+            (Some((i, h)), Some(f)) => {
+                let (x, y) = (h.time * f.speed, f.dist);
+                x < y || (x == y && i < f.wall)
+            }
+            (r, _) => r.is_some(),
+        };
+        if !arc_wins {
+            let f = flat?;
+            let time = f.dist / f.speed;
+            let (point, along) = f.line.land(origin, v, time);
+            let id = f.wall as WallId;
+            return Some(Hit::new(
+                time,
+                point,
+                f.line.normal(),
+                0.0,
                 id,
-                base,
-                a.center(),
-                a.start_direction(),
-                a.radius(),
-                a.is_concave(),
-            ),
-        })
+                self.bases[f.wall] + along,
+            ));
+        }
+        let (i, h) = round?;
+        let Segment::Arc(a) = self.walls[i] else {
+            unreachable!("round hits are arcs")
+        };
+        Some(Hit::on_circle(
+            h.time,
+            h.point,
+            h.normal,
+            a.curvature(),
+            i as WallId,
+            self.bases[i],
+            a.center(),
+            a.start_direction(),
+            a.radius(),
+            a.is_concave(),
+        ))
     }
 
     fn aabb(&self) -> Aabb {

@@ -7,11 +7,11 @@ use std::f64::consts::TAU;
 use glam::DVec2;
 
 use crate::aabb::Aabb;
-use crate::arc::cast_convex_circle;
-use crate::boundary::{Boundary, earlier};
+use crate::arc::{Root, contact, convex_root};
+use crate::boundary::Boundary;
 use crate::error::{GeometryError, positive};
 use crate::hit::Hit;
-use crate::rectangle::cast_box;
+use crate::rectangle::{box_ahead, land_box};
 use crate::shape::Shape;
 
 /// The square `[-l, l]²` minus the open disk of radius `r` at the origin
@@ -67,23 +67,39 @@ impl Sinai {
 
 impl Boundary for Sinai {
     #[inline]
+    /// One division: the box wall ahead (`dist / speed`) and the disk
+    /// (`num / |v|²`) are compared cross-multiplied (ties to the box, the
+    /// lower ids), and only the winner's fraction is divided.
     fn cast(&self, origin: DVec2, v: DVec2) -> Option<Hit> {
-        let wall = cast_box(self.l, self.l, origin, v);
-        let disk = cast_convex_circle(DVec2::ZERO, self.r, origin, v).map(|w| {
-            Hit::on_circle(
-                w.time,
-                w.point,
-                w.normal,
-                1.0 / self.r,
-                4,
-                8.0 * self.l,
-                DVec2::ZERO,
-                DVec2::X,
-                self.r,
-                false,
-            )
+        let ahead = box_ahead(self.l, self.l, origin, v);
+        let disk = convex_root(DVec2::ZERO, self.r, origin, v).map(|r| Root {
+            num: r.num.max(0.0),
+            ..r
         });
-        earlier(wall, disk)
+        let disk_wins = match (disk, ahead) {
+            (Some(d), Some(b)) => d.num * b.speed < b.dist * d.a,
+            (d, None) => d.is_some(),
+            (None, Some(_)) => false,
+        };
+        if !disk_wins {
+            let b = ahead?;
+            return land_box(self.l, self.l, origin, v, b.dist / b.speed, b.wall);
+        }
+        let d = disk?;
+        let time = d.num / d.a;
+        let (point, radial) = contact(DVec2::ZERO, d.d + v * time, self.r);
+        Some(Hit::on_circle(
+            time,
+            point,
+            radial,
+            1.0 / self.r,
+            4,
+            8.0 * self.l,
+            DVec2::ZERO,
+            DVec2::X,
+            self.r,
+            false,
+        ))
     }
 
     fn contains(&self, p: DVec2) -> bool {

@@ -6,7 +6,7 @@ use std::f64::consts::PI;
 use glam::DVec2;
 
 use crate::aabb::Aabb;
-use crate::arc::cast_concave_circle;
+use crate::arc::{concave_root, contact};
 use crate::boundary::Boundary;
 use crate::error::{GeometryError, positive};
 use crate::hit::Hit;
@@ -86,9 +86,13 @@ impl Boundary for Stadium {
         } else {
             (DVec2::new(-a, 0.0), 3, 4.0 * a + PI, DVec2::Y)
         };
-        let w = cast_concave_circle(center, 1.0, origin, v)?;
+        // One division for the cap, as for the flat wall: the flight time
+        // of the larger root, clamped at 0, divided by |v|².
+        let root = concave_root(center, 1.0, origin, v)?;
+        let time = root.num.max(0.0) / root.a;
+        let (point, radial) = contact(center, root.d + v * time, 1.0);
         Some(Hit::on_circle(
-            w.time, w.point, w.normal, -1.0, wall, base, center, from, 1.0, true,
+            time, point, -radial, -1.0, wall, base, center, from, 1.0, true,
         ))
     }
 

@@ -430,25 +430,69 @@ mod tests {
         );
     }
 
-    /// Operations per collision step of each kernel on the stadium (a = 1,
-    /// α = 0.5), counted with a one-lane counting type over 20 000 steps:
-    /// the numbers behind the "floor" column of docs/PERFORMANCE.md. Run
-    /// with `--nocapture` to see them.
+    /// Operations per collision step of each kernel, counted with a
+    /// one-lane counting type over 20 000 steps (α = 0.5): the stadium
+    /// `a = 1` and the Sinai table `L = 2, R = 1` built in, and the tables
+    /// built from segments of `lanes_speed` (stadium, mushroom, 20-gon). The
+    /// numbers behind the "floor" and the division tables of
+    /// docs/PERFORMANCE.md; run with `--nocapture` to see them.
     #[test]
     fn operation_counts_per_step() {
-        use crate::lanes::counted::{Counted, take};
-        let table = Stadium::new(1.0).unwrap();
+        use spinball_geometry::Sinai;
+
+        use crate::geom::{LaneSegments, LaneSinai, segment_tables};
+
         let law = SpinLaw::new(0.5).unwrap();
-        let g = LaneStadium::new(table.a());
         let l = Law::new(&law);
-        let s = Sampler::Paper.initial_state(&table, &law, 1, 0);
+        // [plain, fd, tangent, spectrum] × [div, sqrt] per step.
+        let stadium = Stadium::new(1.0).unwrap();
+        let c = counts("stadium", &stadium, &LaneStadium::new(1.0), &l, &law);
+        // One division per cast (the chosen fraction) and one square root
+        // (the cap's discriminant); the fallback of the circle contact never
+        // runs. Finite differences add the shadow's cast, its shell and
+        // δ0/δ with δ's square root; the tangent map adds 1/(n·v); the
+        // spectrum five 1/|v_i| and five |v_i| of Gram–Schmidt.
+        assert_eq!(c, [[1.0, 1.0], [4.0, 3.0], [2.0, 1.0], [7.0, 6.0]]);
+        let sinai = Sinai::new(2.0, 1.0).unwrap();
+        let c = counts("sinai", &sinai, &LaneSinai::new(2.0, 1.0), &l, &law);
+        assert_eq!(c, [[1.0, 1.0], [4.0, 3.0], [2.0, 1.0], [7.0, 6.0]]);
+
+        let seg_stadium = segment_tables::stadium(1.0);
+        let ls = LaneSegments::new(&seg_stadium);
+        let c = counts("seg-stadium", &seg_stadium, &ls.view::<true>(), &l, &law);
+        // With arcs: the arcs' shared 1/|v|² and the one division of the
+        // chosen flat wall; a square root per arc.
+        assert_eq!(c[0], [2.0, 2.0]);
+        let mushroom = segment_tables::mushroom(1.0, 0.3, 1.0);
+        let lm = LaneSegments::new(&mushroom);
+        let c = counts("mushroom", &mushroom, &lm.view::<true>(), &l, &law);
+        assert_eq!(c[0], [2.0, 1.0]);
+        let gon = segment_tables::alternating_twenty_gon();
+        let lg = LaneSegments::new(&gon);
+        let c = counts("20-gon", &gon, &lg.view::<false>(), &l, &law);
+        // Without arcs: one division per cast, however many walls.
+        assert_eq!(c[0], [1.0, 0.0]);
+    }
+
+    /// Runs the four kernels on `table` with the counting lane type and
+    /// prints every operation per step; returns divisions and square roots
+    /// per step of each, to 0.01.
+    fn counts<B: spinball_geometry::Boundary, G: Geom>(
+        name: &str,
+        table: &B,
+        g: &G,
+        l: &Law,
+        law: &SpinLaw,
+    ) -> [[f64; 2]; 4] {
+        use crate::lanes::counted::{Counted, take};
+        const N: u64 = 20_000;
+        let s = Sampler::Paper.initial_state(table, law, 1, 0);
         let d = TangentVector::from_array([0.6, -0.2, 0.1, 0.7, 0.3]);
         let unit = |j: usize| {
             let mut z = [0.0; 5];
             z[j] = 1.0;
             TangentVector::from_array(z)
         };
-        const N: u64 = 20_000;
         let names = [
             "add/sub",
             "mul",
@@ -466,43 +510,35 @@ mod tests {
                 .zip(c)
                 .map(|(n, k)| format!("{n} {:.2}", k as f64 / N as f64))
                 .collect();
-            println!("{kernel:<9} per step: {}", per.join(", "));
-            c
+            println!("{name:<12} {kernel:<9} per step: {}", per.join(", "));
+            // To 0.01 per step: the launch's and the end's few operations
+            // (1/|V|², the final norm) vanish.
+            let per_step = |k: u64| (k as f64 / N as f64 * 100.0).round() / 100.0;
+            [per_step(c[2]), per_step(c[3])]
         };
         take();
-        run_chunks::<_, _, Counted, _>(Baseline, &g, &l, &Plain { collisions: N }, &[s]);
+        run_chunks::<_, _, Counted, _>(Baseline, g, l, &Plain { collisions: N }, &[s]);
         let plain = report("plain");
-        run_chunks::<_, _, Counted, _>(
-            Baseline,
-            &g,
-            &l,
-            &FiniteDifference {
-                collisions: N,
-                delta0: 1e-7,
-            },
-            &[(s, d)],
-        );
+        let fd = FiniteDifference {
+            collisions: N,
+            delta0: 1e-7,
+        };
+        run_chunks::<_, _, Counted, _>(Baseline, g, l, &fd, &[(s, d)]);
         let fd = report("fd");
-        run_chunks::<_, _, Counted, _>(Baseline, &g, &l, &Tangent { collisions: N }, &[(s, d)]);
-        report("tangent");
+        run_chunks::<_, _, Counted, _>(Baseline, g, l, &Tangent { collisions: N }, &[(s, d)]);
+        let tangent = report("tangent");
+        let spectrum = Spectrum {
+            collisions: N,
+            qr_interval: 1,
+        };
         run_chunks::<_, _, Counted, _>(
             Baseline,
-            &g,
-            &l,
-            &Spectrum {
-                collisions: N,
-                qr_interval: 1,
-            },
+            g,
+            l,
+            &spectrum,
             &[(s, std::array::from_fn(unit))],
         );
-        report("spectrum");
-        // Sanity: two divisions and a square root per plain stadium step
-        // (flat time, 1/|v|², the cap's discriminant; plus one 1/|V|² at
-        // launch); the fallback of the circle contact never runs. The finite
-        // differences add the shadow's step and shell, and δ0/δ.
-        assert_eq!(plain[2], 2 * N + 1);
-        assert_eq!(plain[3], N);
-        assert_eq!(fd[2], 6 * N + 1);
-        assert_eq!(fd[3], 3 * N);
+        let spectrum = report("spectrum");
+        [plain, fd, tangent, spectrum]
     }
 }

@@ -30,6 +30,8 @@ mod agree;
 pub(crate) use circle::LaneCircle;
 pub(crate) use rectangle::LaneRectangle;
 pub(crate) use segments::LaneSegments;
+#[cfg(test)]
+pub(crate) use segments::tests as segment_tables;
 pub(crate) use sinai::LaneSinai;
 pub(crate) use stadium::LaneStadium;
 

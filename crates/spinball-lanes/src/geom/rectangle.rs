@@ -12,39 +12,77 @@ use crate::lanes::{Lanes, MaskOps};
 /// multiplication, one division.
 #[inline(always)]
 pub(super) fn cast_box<L: Lanes>(l: f64, h: f64, x: L, y: L, vx: L, vy: L) -> LaneHit<L> {
-    let zero = L::splat(0.0);
-    let one = L::splat(1.0);
-    let up = vy.gt(zero);
-    let right = vx.gt(zero);
-    let dy = L::select(up, L::splat(h) - y, y + h).max(zero);
-    let dx = L::select(right, L::splat(l) - x, x + l).max(zero);
-    let avy = vy.abs();
-    let avx = vx.abs();
-    let ty = dy * avx;
-    let tx = dx * avy;
-    // Tie: the lower id wins, which is the horizontal wall unless it is the
-    // top (2) against the right (1).
-    let y_wins_tie = up.and(right).not();
-    let use_y = avy
-        .gt(zero)
-        .and(avx.eq(zero).or(ty.lt(tx)).or(ty.eq(tx).and(y_wins_tie)));
-    let time = L::select(use_y, dy, dx) / L::select(use_y, avy, avx);
-    let ok = use_y.or(avx.gt(zero)).and(time.is_finite());
-    let time = time.max(zero);
-    let px = (x + vx * time).clamp(-l, l);
-    let py = (y + vy * time).clamp(-h, h);
-    LaneHit {
-        time: L::select(ok, time, L::splat(f64::NAN)),
-        px: L::select(use_y, px, L::select(right, L::splat(l), L::splat(-l))),
-        py: L::select(use_y, L::select(up, L::splat(h), L::splat(-h)), py),
-        nx: L::select(use_y, zero, L::select(right, -one, one)),
-        ny: L::select(use_y, L::select(up, -one, one), zero),
-        curvature: zero,
-        wall: L::select(
+    let b = BoxAhead::new(l, h, x, y, vx, vy);
+    b.land(l, h, x, y, vx, vy, b.dist / b.speed)
+}
+
+/// `box_ahead` of `spinball-geometry` per lane: the wall ahead and its
+/// flight time as the undivided fraction `dist / speed`.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct BoxAhead<L: Lanes> {
+    /// Whether the horizontal wall (bottom or top) comes first.
+    use_y: L::Mask,
+    up: L::Mask,
+    right: L::Mask,
+    /// The lanes where the scalar finds a wall (the ball moves).
+    pub ok: L::Mask,
+    pub dist: L,
+    pub speed: L,
+}
+
+impl<L: Lanes> BoxAhead<L> {
+    #[inline(always)]
+    pub fn new(l: f64, h: f64, x: L, y: L, vx: L, vy: L) -> Self {
+        let zero = L::splat(0.0);
+        let up = vy.gt(zero);
+        let right = vx.gt(zero);
+        let dy = L::select(up, L::splat(h) - y, y + h).max(zero);
+        let dx = L::select(right, L::splat(l) - x, x + l).max(zero);
+        let avy = vy.abs();
+        let avx = vx.abs();
+        let ty = dy * avx;
+        let tx = dx * avy;
+        // Tie: the lower id wins, which is the horizontal wall unless it is
+        // the top (2) against the right (1).
+        let y_wins_tie = up.and(right).not();
+        let use_y = avy
+            .gt(zero)
+            .and(avx.eq(zero).or(ty.lt(tx)).or(ty.eq(tx).and(y_wins_tie)));
+        BoxAhead {
             use_y,
-            L::select(up, L::splat(2.0), zero),
-            L::select(right, one, L::splat(3.0)),
-        ),
+            up,
+            right,
+            ok: use_y.or(avx.gt(zero)),
+            dist: L::select(use_y, dy, dx),
+            speed: L::select(use_y, avy, avx),
+        }
+    }
+
+    /// `land_box`: the hit after flying for `time` (NaN where the scalar
+    /// has none).
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    pub fn land(&self, l: f64, h: f64, x: L, y: L, vx: L, vy: L, time: L) -> LaneHit<L> {
+        let zero = L::splat(0.0);
+        let one = L::splat(1.0);
+        let (use_y, up, right) = (self.use_y, self.up, self.right);
+        let ok = self.ok.and(time.is_finite());
+        let time = time.max(zero);
+        let px = (x + vx * time).clamp(-l, l);
+        let py = (y + vy * time).clamp(-h, h);
+        LaneHit {
+            time: L::select(ok, time, L::splat(f64::NAN)),
+            px: L::select(use_y, px, L::select(right, L::splat(l), L::splat(-l))),
+            py: L::select(use_y, L::select(up, L::splat(h), L::splat(-h)), py),
+            nx: L::select(use_y, zero, L::select(right, -one, one)),
+            ny: L::select(use_y, L::select(up, -one, one), zero),
+            curvature: zero,
+            wall: L::select(
+                use_y,
+                L::select(up, L::splat(2.0), zero),
+                L::select(right, one, L::splat(3.0)),
+            ),
+        }
     }
 }
 

@@ -38,6 +38,20 @@ impl<L: Lanes> Ray<L> {
         }
     }
 
+    /// `|v|²` without its reciprocal, for a cast that divides once by a
+    /// chosen fraction's denominator instead.
+    #[inline(always)]
+    pub fn new_undivided(x: L, y: L, vx: L, vy: L) -> Self {
+        Ray {
+            x,
+            y,
+            vx,
+            vy,
+            a: vx * vx + vy * vy,
+            inv_a: L::splat(0.0),
+        }
+    }
+
     /// A ray for tables without round walls: `|v|²` and `1/|v|²` are left
     /// at 0, unused.
     #[inline(always)]
@@ -123,18 +137,27 @@ fn contact<L: Lanes, const UNIT: bool>(
     (cx + times(nx, k.r), cy + times(ny, k.r), nx, ny)
 }
 
-/// `cast_concave_circle` of `spinball-geometry`, lane by lane (centre per
-/// lane): the ball inside the circle, leaving through it. `care`: the lanes
-/// whose result is used. `UNIT`: radius 1 (see [`contact`]); `ON_AXIS`:
-/// `cy = 0`, so `y − cy = y` exactly.
+/// A circle root per lane as an undivided fraction: the flight time is
+/// `num / a` (`a = |v|²` of the ray), before clamping; `dx, dy` is the
+/// ball's offset from the centre. `ok`: the lanes where the scalar finds the
+/// root.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Root<L: Lanes> {
+    pub ok: L::Mask,
+    pub num: L,
+    pub dx: L,
+    pub dy: L,
+}
+
+/// `concave_root` of `spinball-geometry`: the larger root for a ball inside
+/// the circle. `ON_AXIS`: the centre is on the x axis (skip `y − 0`).
 #[inline(always)]
-pub(super) fn concave<L: Lanes, const UNIT: bool, const ON_AXIS: bool>(
+pub(super) fn concave_root<L: Lanes, const ON_AXIS: bool>(
     cx: L,
     cy: L,
     k: &Round,
     ray: &Ray<L>,
-    care: L::Mask,
-) -> Contact<L> {
+) -> Root<L> {
     let zero = L::splat(0.0);
     let (vx, vy) = (ray.vx, ray.vy);
     let dx = ray.x - cx;
@@ -146,30 +169,18 @@ pub(super) fn concave<L: Lanes, const UNIT: bool, const ON_AXIS: bool>(
     // On the circle to rounding: touch at once rather than miss.
     let disc = L::select(c.le(L::splat(k.touch)), disc.max(zero), disc);
     let ok = disc.ge(zero).and(a.gt(zero));
-    let time = ((disc.sqrt() - b) * ray.inv_a).max(zero);
-    let (px, py, radx, rady) =
-        contact::<L, UNIT>(cx, cy, dx + vx * time, dy + vy * time, k, care.and(ok));
-    Contact {
+    Root {
         ok,
-        time,
-        px,
-        py,
-        nx: -radx,
-        ny: -rady,
+        num: disc.sqrt() - b,
+        dx,
+        dy,
     }
 }
 
-/// `cast_convex_circle` of `spinball-geometry`, lane by lane (centre per
-/// lane): the ball outside the circle, meeting it if moving towards it.
-/// `care`: the lanes whose result is used. `UNIT`: radius 1.
+/// `convex_root` of `spinball-geometry`: the smaller root for a ball
+/// outside the circle moving towards it.
 #[inline(always)]
-pub(super) fn convex<L: Lanes, const UNIT: bool>(
-    cx: L,
-    cy: L,
-    k: &Round,
-    ray: &Ray<L>,
-    care: L::Mask,
-) -> Contact<L> {
+pub(super) fn convex_root<L: Lanes>(cx: L, cy: L, k: &Round, ray: &Ray<L>) -> Root<L> {
     let zero = L::splat(0.0);
     let (vx, vy) = (ray.vx, ray.vy);
     let dx = ray.x - cx;
@@ -178,12 +189,75 @@ pub(super) fn convex<L: Lanes, const UNIT: bool>(
     let a = ray.a;
     let c = (dx * dx + dy * dy) - k.r2;
     let disc = b * b - a * c;
-    let ok = b.lt(zero).and(disc.gt(zero));
-    let time = ((-b - disc.sqrt()) * ray.inv_a).max(zero);
+    Root {
+        ok: b.lt(zero).and(disc.gt(zero)),
+        num: -b - disc.sqrt(),
+        dx,
+        dy,
+    }
+}
+
+/// The contact of a root after flying for `time`: `contact` at
+/// `d + v·time`, as the scalar `cast_*_circle` and the one-division casts
+/// of the stadium and the Sinai table compute it.
+#[inline(always)]
+pub(super) fn contact_at<L: Lanes, const UNIT: bool>(
+    cx: L,
+    cy: L,
+    root: &Root<L>,
+    ray: &Ray<L>,
+    time: L,
+    k: &Round,
+    care: L::Mask,
+) -> (L, L, L, L) {
+    contact::<L, UNIT>(
+        cx,
+        cy,
+        root.dx + ray.vx * time,
+        root.dy + ray.vy * time,
+        k,
+        care,
+    )
+}
+
+/// `cast_concave_circle`: the ball inside the circle, where it leaves.
+#[inline(always)]
+pub(super) fn concave<L: Lanes, const UNIT: bool, const ON_AXIS: bool>(
+    cx: L,
+    cy: L,
+    k: &Round,
+    ray: &Ray<L>,
+    care: L::Mask,
+) -> Contact<L> {
+    let root = concave_root::<L, ON_AXIS>(cx, cy, k, ray);
+    let time = (root.num * ray.inv_a).max(L::splat(0.0));
     let (px, py, radx, rady) =
-        contact::<L, UNIT>(cx, cy, dx + vx * time, dy + vy * time, k, care.and(ok));
+        contact_at::<L, UNIT>(cx, cy, &root, ray, time, k, care.and(root.ok));
     Contact {
-        ok,
+        ok: root.ok,
+        time,
+        px,
+        py,
+        nx: -radx,
+        ny: -rady,
+    }
+}
+
+/// `cast_convex_circle`: the ball outside the circle, where it meets it.
+#[inline(always)]
+pub(super) fn convex<L: Lanes, const UNIT: bool>(
+    cx: L,
+    cy: L,
+    k: &Round,
+    ray: &Ray<L>,
+    care: L::Mask,
+) -> Contact<L> {
+    let root = convex_root(cx, cy, k, ray);
+    let time = (root.num * ray.inv_a).max(L::splat(0.0));
+    let (px, py, radx, rady) =
+        contact_at::<L, UNIT>(cx, cy, &root, ray, time, k, care.and(root.ok));
+    Contact {
+        ok: root.ok,
         time,
         px,
         py,

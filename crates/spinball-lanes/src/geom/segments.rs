@@ -1,35 +1,33 @@
 //! Tables built from segments in lanes: any [`SegmentTable`] (polygons,
 //! mushrooms, annuli, tables with holes) runs in the kernels.
 //!
-//! The scalar `SegmentTable::cast` asks every wall in id order and keeps
-//! the first of the earliest hits. Here every wall is cast for every lane,
-//! with the scalar's arithmetic (`cast_line` for a flat wall; the shared
-//! circle casts of [`round`](super::round) and `ArcSegment::covers` for an
-//! arc), and the earliest is kept by compare-and-select with the same rule
-//! (a later wall replaces the best only if strictly earlier), so a lane finds
-//! bitwise the scalar hit. The walls' constants are computed once, when the
-//! table is compiled into a [`LaneSegments`].
+//! The scalar `SegmentTable::cast` picks the earliest wall with one
+//! division: the flat walls are compared by their undivided flight times
+//! (`LineSegment::approach`, cross-multiplied), in the order of
+//! `SegmentTable::flat_visits`; the arcs by their flight times (their circle
+//! casts share `1/|v|²`) in id order; then the earliest arc against the
+//! earliest flat wall, and the flat wall's fraction is divided only if it
+//! wins. Here every wall is cast for every lane with the same arithmetic
+//! and the same comparisons, and the earliest kept by compare-and-select,
+//! so a lane finds bitwise the scalar hit. The walls' constants are
+//! computed once, when the table is compiled into a [`LaneSegments`].
 //!
-//! Two flat walls whose inward normals are exact opposites (the sides of a
-//! box, of a stadium, of a mushroom's stem) can never both face a ball: `v·n`
-//! of one is minus that of the other, and only a wall with `v·n < 0` is hit.
-//! Such a pair is cast as one wall whose constants are selected lane by lane
-//! (the one facing the ball), which saves a division and most of a wall's
-//! arithmetic. The pair is cast where its later wall stands in id order, and
-//! it competes with the walls cast before it by (time, id), so ties still
-//! go to the lower id.
+//! A pair of flat walls with exactly opposite normals (see
+//! `spinball_geometry::FlatVisit`) is cast as one wall whose constants are
+//! selected lane by lane (the one facing the ball), which saves most of a
+//! wall's arithmetic.
 //!
 //! [`SegmentTable`]: spinball_geometry::SegmentTable
 
 use std::f64::consts::TAU;
 
-use spinball_geometry::{ArcSegment, DVec2, LineSegment, Segment, SegmentTable};
+use spinball_geometry::{ArcSegment, DVec2, FlatVisit, LineSegment, Segment, SegmentTable};
 
 use super::round::{Contact, Ray, Round, concave, convex};
 use super::{Geom, LaneHit};
 use crate::lanes::{Lanes, MaskOps};
 
-/// A flat wall's constants, as `cast_line` uses them.
+/// A flat wall's constants, as `LineSegment::approach` and `land` use them.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Flat {
     /// Wall id.
@@ -43,8 +41,7 @@ struct Flat {
     /// Unit inward normal.
     nx: f64,
     ny: f64,
-    /// Minus the normal: `v·(−n)` is `−(v·n)` exactly, the divisor of the
-    /// flight time, without a negation.
+    /// Minus the normal: `v·(−n)` is `−(v·n)` exactly.
     mnx: f64,
     mny: f64,
     length: f64,
@@ -54,12 +51,7 @@ struct Flat {
 
 impl Flat {
     fn new(id: usize, l: &LineSegment, slack: f64) -> Self {
-        // `LineSegment::new`'s direction, recomputed from the public ends
-        // with the same expression; its left normal is the public normal.
-        let (start, length) = (l.start(), l.length());
-        let dir = (l.end() - start) / length;
-        let normal = l.normal();
-        debug_assert_eq!(dir.perp(), normal);
+        let (start, dir, normal) = (l.start(), l.direction(), l.normal());
         Flat {
             id: id as f64,
             sx: start.x,
@@ -70,15 +62,9 @@ impl Flat {
             ny: normal.y,
             mnx: -normal.x,
             mny: -normal.y,
-            length,
-            hi: length + slack,
+            length: l.length(),
+            hi: l.length() + slack,
         }
-    }
-
-    /// Whether `other`'s normal is exactly (in value) the opposite of this
-    /// one's, so that the two never both face a ball.
-    fn opposes(&self, other: &Flat) -> bool {
-        self.nx == -other.nx && self.ny == -other.ny
     }
 
     #[inline(always)]
@@ -181,16 +167,13 @@ impl Curve {
     }
 }
 
-/// One compare-and-select step of the cast.
+/// One step of the flat walls' visit order.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Step {
-    /// A flat wall, in id order.
-    Flat(Flat),
-    /// Two flat walls with opposite normals (lower id first), cast where
-    /// the later one stands.
+    /// A flat wall.
+    One(Flat),
+    /// Two flat walls with opposite normals (lower id first).
     Pair(Flat, Flat),
-    /// An arc, in id order.
-    Arc(Curve),
 }
 
 /// A [`SegmentTable`] compiled for the kernels: every wall's constants,
@@ -198,63 +181,49 @@ enum Step {
 /// cast against a [`view`](Self::view) of it.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct LaneSegments {
+    /// The flat walls, in `SegmentTable::flat_visits` order.
     steps: Vec<Step>,
+    /// The arcs, in id order.
+    arcs: Vec<Curve>,
     /// `−slack`: how far behind a flat wall, or past its ends, a ball or a
     /// contact still counts.
     lo: f64,
-    curved: bool,
 }
 
 impl LaneSegments {
     pub fn new(table: &SegmentTable) -> Self {
         let slack = table.slack();
         let walls = table.walls();
-        let flats: Vec<Option<Flat>> = walls
+        let flat = |i: usize| match &walls[i] {
+            Segment::Line(l) => Flat::new(i, l, slack),
+            Segment::Arc(_) => unreachable!("flat visits are lines"),
+        };
+        let steps = table
+            .flat_visits()
             .iter()
-            .enumerate()
-            .map(|(i, w)| match w {
-                Segment::Line(l) => Some(Flat::new(i, l, slack)),
-                Segment::Arc(_) => None,
+            .map(|v| match *v {
+                FlatVisit::One(i) => Step::One(flat(i)),
+                FlatVisit::Pair(i, j) => Step::Pair(flat(i), flat(j)),
             })
             .collect();
-        // Pair each flat wall with the first later unpaired one facing the
-        // other way; `partner[j] = Some(i)` for the later wall j of a pair.
-        let mut partner: Vec<Option<usize>> = vec![None; walls.len()];
-        let mut paired = vec![false; walls.len()];
-        for i in 0..walls.len() {
-            let Some(a) = flats[i].filter(|_| !paired[i]) else {
-                continue;
-            };
-            let found = (i + 1..walls.len())
-                .find(|&j| !paired[j] && flats[j].is_some_and(|b| a.opposes(&b)));
-            if let Some(j) = found {
-                paired[i] = true;
-                paired[j] = true;
-                partner[j] = Some(i);
-            }
-        }
-        let mut steps = Vec::with_capacity(walls.len());
-        for (j, w) in walls.iter().enumerate() {
-            match (w, partner[j]) {
-                (Segment::Arc(a), _) => steps.push(Step::Arc(Curve::new(j, a, slack))),
-                (Segment::Line(_), Some(i)) => {
-                    steps.push(Step::Pair(flats[i].expect("flat"), flats[j].expect("flat")));
-                }
-                // The earlier wall of a pair is cast with its partner.
-                (Segment::Line(_), None) if paired[j] => {}
-                (Segment::Line(_), None) => steps.push(Step::Flat(flats[j].expect("flat"))),
-            }
-        }
+        let arcs = walls
+            .iter()
+            .enumerate()
+            .filter_map(|(i, w)| match w {
+                Segment::Arc(a) => Some(Curve::new(i, a, slack)),
+                Segment::Line(_) => None,
+            })
+            .collect();
         LaneSegments {
             steps,
+            arcs,
             lo: -slack,
-            curved: walls.iter().any(|w| matches!(w, Segment::Arc(_))),
         }
     }
 
     /// Whether the table has an arc.
     pub fn is_curved(&self) -> bool {
-        self.curved
+        !self.arcs.is_empty()
     }
 
     /// The table as the kernels cast against it. `CURVED` must be true if
@@ -262,11 +231,12 @@ impl LaneSegments {
     /// and the circle arithmetic).
     pub fn view<const CURVED: bool>(&self) -> Segments<'_, CURVED> {
         assert!(
-            CURVED || !self.curved,
+            CURVED || !self.is_curved(),
             "a table with arcs needs the curved view"
         );
         Segments {
             steps: &self.steps,
+            arcs: &self.arcs,
             lo: self.lo,
         }
     }
@@ -277,6 +247,7 @@ impl LaneSegments {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Segments<'a, const CURVED: bool> {
     steps: &'a [Step],
+    arcs: &'a [Curve],
     lo: f64,
 }
 
@@ -287,26 +258,85 @@ fn clamp<L: Lanes>(x: L, lo: L, hi: L) -> L {
     L::select(x.gt(hi), hi, x)
 }
 
-/// `cast_line` of `spinball-geometry`, lane by lane, given `w = −(v·n)`:
-/// the lanes where it returns `Some`, the flight time and the contact.
+/// `LineSegment::approach`, lane by lane, given `w = −(v·n)`: the lanes
+/// where it returns `Some`, and the undivided flight time's numerator.
 #[inline(always)]
-fn cast_flat<L: Lanes>(f: &FlatLanes<L>, w: L, lo: f64, ray: &Ray<L>) -> (L::Mask, L, L, L) {
+fn approach<L: Lanes>(f: &FlatLanes<L>, w: L, lo: f64, ray: &Ray<L>) -> (L::Mask, L) {
     let zero = L::splat(0.0);
     let lo = L::splat(lo);
     let relx = ray.x - f.sx;
     let rely = ray.y - f.sy;
     let dist = relx * f.nx + rely * f.ny;
-    let time = (dist / w).max(zero);
-    let along = (relx + ray.vx * time) * f.dx + (rely + ray.vy * time) * f.dy;
-    // Moving into the wall, not behind it (a NaN distance is not "behind"),
-    // and reaching it between its ends.
-    let ok = w
-        .gt(zero)
-        .and(dist.lt(lo).not())
-        .and(along.ge(lo))
-        .and(along.le(f.hi));
-    let along = clamp(along, zero, f.length);
-    (ok, time, f.sx + f.dx * along, f.sy + f.dy * along)
+    // Moving into the wall, not behind it (a NaN distance is not "behind").
+    let ok = w.gt(zero).and(dist.lt(lo).not());
+    let dist = dist.max(zero);
+    let along_w = (relx * f.dx + rely * f.dy) * w + (ray.vx * f.dx + ray.vy * f.dy) * dist;
+    let ok = ok.and(along_w.ge(lo * w)).and(along_w.le(f.hi * w));
+    (ok, dist)
+}
+
+/// The earliest flat wall so far, lane by lane: its undivided flight time
+/// (`dist / speed`; `dist` NaN while there is none) and what `land` needs.
+#[derive(Clone, Copy, Debug)]
+struct Earliest<L: Lanes> {
+    dist: L,
+    speed: L,
+    id: L,
+    sx: L,
+    sy: L,
+    dx: L,
+    dy: L,
+    length: L,
+}
+
+impl<L: Lanes> Earliest<L> {
+    /// Whether the candidate `(dist, w)` of wall `id` comes first: strictly
+    /// earlier (`dist·speed' < dist'·w`, any candidate while there is none),
+    /// or, if `TIES`, as early with a lower id.
+    #[inline(always)]
+    fn beaten<const TIES: bool>(&self, dist: L, w: L, id: L) -> L::Mask {
+        let (x, y) = (dist * self.speed, self.dist * w);
+        let earlier = y.le(x).not();
+        if TIES {
+            earlier.or(x.eq(y).and(id.lt(self.id)))
+        } else {
+            earlier
+        }
+    }
+
+    #[inline(always)]
+    fn keep(&mut self, take: L::Mask, dist: L, w: L, c: &FlatLanes<L>) {
+        self.dist = L::select(take, dist, self.dist);
+        self.speed = L::select(take, w, self.speed);
+        self.id = L::select(take, c.id, self.id);
+        self.sx = L::select(take, c.sx, self.sx);
+        self.sy = L::select(take, c.sy, self.sy);
+        self.dx = L::select(take, c.dx, self.dx);
+        self.dy = L::select(take, c.dy, self.dy);
+        self.length = L::select(take, c.length, self.length);
+    }
+
+    /// `LineSegment::land` after the one division, as a hit.
+    #[inline(always)]
+    fn land(&self, ray: &Ray<L>) -> LaneHit<L> {
+        let zero = L::splat(0.0);
+        let time = self.dist / self.speed;
+        let relx = ray.x - self.sx;
+        let rely = ray.y - self.sy;
+        let along =
+            (relx * self.dx + rely * self.dy) + (ray.vx * self.dx + ray.vy * self.dy) * time;
+        let along = clamp(along, zero, self.length);
+        LaneHit {
+            time,
+            px: self.sx + self.dx * along,
+            py: self.sy + self.dy * along,
+            // The normal is the direction's left perpendicular, exactly.
+            nx: -self.dy,
+            ny: self.dx,
+            curvature: zero,
+            wall: self.id,
+        }
+    }
 }
 
 /// Replace the best hit by `c` in the lanes of `take`.
@@ -351,49 +381,32 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
         };
         (ok, hit)
     }
-}
 
-impl<const CURVED: bool> Geom for Segments<'_, CURVED> {
-    const CURVED: bool = CURVED;
-
+    /// The earliest flat wall of every lane.
     #[inline(always)]
-    fn cast<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> LaneHit<L> {
+    fn flats<L: Lanes>(&self, ray: &Ray<L>) -> Earliest<L> {
         let zero = L::splat(0.0);
-        // `|v|²` and its reciprocal serve every arc; a table without arcs
-        // needs neither.
-        let ray = if CURVED {
-            Ray::new(x, y, vx, vy)
-        } else {
-            Ray::flat(x, y, vx, vy)
-        };
-        let mut best = LaneHit {
-            time: L::splat(f64::NAN),
-            px: zero,
-            py: zero,
-            nx: zero,
-            ny: zero,
-            curvature: zero,
-            wall: zero,
+        let (vx, vy) = (ray.vx, ray.vy);
+        let mut best = Earliest {
+            dist: L::splat(f64::NAN),
+            speed: L::splat(1.0),
+            id: zero,
+            sx: zero,
+            sy: zero,
+            dx: zero,
+            dy: zero,
+            length: zero,
         };
         for step in self.steps {
             match step {
-                Step::Flat(f) => {
+                Step::One(f) => {
                     let w = vx * f.mnx + vy * f.mny;
                     let c = f.lanes::<L>();
-                    let (ok, time, px, py) = cast_flat(&c, w, self.lo, &ray);
-                    // In id order: only a strictly earlier hit replaces
-                    // the best (and any hit replaces none, a NaN time).
-                    let take = ok.and(best.time.le(time).not());
-                    let hit = LaneHit {
-                        time,
-                        px,
-                        py,
-                        nx: c.nx,
-                        ny: c.ny,
-                        curvature: zero,
-                        wall: c.id,
-                    };
-                    keep(&mut best, take, hit);
+                    let (ok, dist) = approach(&c, w, self.lo, ray);
+                    // Every wall visited before this one has a lower id, so
+                    // a tie never goes to it: strictly earlier suffices.
+                    let take = ok.and(best.beaten::<false>(dist, w, c.id));
+                    best.keep(take, dist, w, &c);
                 }
                 Step::Pair(a, b) => {
                     // `−(v·n)` of `a`; that of `b` is its negation, so the
@@ -413,30 +426,10 @@ impl<const CURVED: bool> Geom for Segments<'_, CURVED> {
                         length: sel(ca.length, cb.length),
                         hi: sel(ca.hi, cb.hi),
                     };
-                    let (ok, time, px, py) = cast_flat(&c, wa.abs(), self.lo, &ray);
-                    // Out of id order: earlier, or as early with a lower id.
-                    let earlier = best
-                        .time
-                        .le(time)
-                        .not()
-                        .or(best.time.eq(time).and(c.id.lt(best.wall)));
-                    let hit = LaneHit {
-                        time,
-                        px,
-                        py,
-                        nx: c.nx,
-                        ny: c.ny,
-                        curvature: zero,
-                        wall: c.id,
-                    };
-                    keep(&mut best, ok.and(earlier), hit);
-                }
-                Step::Arc(a) => {
-                    if CURVED {
-                        let (ok, hit) = self.arc(a, &ray);
-                        let take = ok.and(best.time.le(hit.time).not());
-                        keep(&mut best, take, hit);
-                    }
+                    let w = wa.abs();
+                    let (ok, dist) = approach(&c, w, self.lo, ray);
+                    let take = ok.and(best.beaten::<true>(dist, w, c.id));
+                    best.keep(take, dist, w, &c);
                 }
             }
         }
@@ -444,8 +437,52 @@ impl<const CURVED: bool> Geom for Segments<'_, CURVED> {
     }
 }
 
+impl<const CURVED: bool> Geom for Segments<'_, CURVED> {
+    const CURVED: bool = CURVED;
+
+    #[inline(always)]
+    fn cast<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> LaneHit<L> {
+        if !CURVED {
+            let ray = Ray::flat(x, y, vx, vy);
+            return self.flats(&ray).land(&ray);
+        }
+        let zero = L::splat(0.0);
+        // `|v|²` and its reciprocal serve every arc.
+        let ray = Ray::new(x, y, vx, vy);
+        let flat = self.flats(&ray);
+        let mut round = LaneHit {
+            time: L::splat(f64::NAN),
+            px: zero,
+            py: zero,
+            nx: zero,
+            ny: zero,
+            curvature: zero,
+            wall: zero,
+        };
+        for a in self.arcs {
+            let (ok, hit) = self.arc(a, &ray);
+            // In id order: only a strictly earlier hit replaces the best
+            // (and any hit replaces none, a NaN time).
+            let take = ok.and(round.time.le(hit.time).not());
+            keep(&mut round, take, hit);
+        }
+        // The earliest arc against the earliest flat wall: `t·speed < dist`
+        // (any arc if there is no flat wall, a NaN `dist`), ties to the
+        // lower id.
+        let (x, y) = (round.time * flat.speed, flat.dist);
+        let arc_wins = round
+            .time
+            .eq(round.time)
+            .and(y.le(x).not().or(x.eq(y).and(round.wall.lt(flat.id))));
+        let mut best = flat.land(&ray);
+        keep(&mut best, arc_wins, round);
+        best
+    }
+}
+
+/// Tables built from segments for the tests here and in the kernels.
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use std::f64::consts::{FRAC_PI_2, PI};
 
     use rand::{Rng, SeedableRng};
@@ -464,7 +501,7 @@ mod tests {
     }
 
     /// The stadium of half-length `a`: bottom, right cap, top, left cap.
-    fn stadium(a: f64) -> SegmentTable {
+    pub(crate) fn stadium(a: f64) -> SegmentTable {
         SegmentTable::new(vec![
             line(d(-a, -1.0), d(a, -1.0)),
             arc(d(a, 0.0), 1.0, -FRAC_PI_2, PI),
@@ -490,7 +527,7 @@ mod tests {
 
     /// The mushroom of the `SegmentTable` docs: cap radius `r`, stem
     /// half-width `w`, stem height `h`.
-    fn mushroom(r: f64, w: f64, h: f64) -> SegmentTable {
+    pub(crate) fn mushroom(r: f64, w: f64, h: f64) -> SegmentTable {
         SegmentTable::new(vec![
             line(d(-w, -h), d(w, -h)),
             line(d(w, -h), d(w, 0.0)),
@@ -500,6 +537,22 @@ mod tests {
             line(d(-w, 0.0), d(-w, -h)),
         ])
         .unwrap()
+    }
+
+    /// A star-shaped 20-gon with alternating radii (1 and 0.81..0.99), no
+    /// fixed seed needed: the operation counts' 20-segment table.
+    pub(crate) fn alternating_twenty_gon() -> SegmentTable {
+        let v: Vec<DVec2> = (0..20)
+            .map(|k| {
+                let radius = if k % 2 == 0 {
+                    1.0
+                } else {
+                    0.8 + 0.01 * k as f64
+                };
+                DVec2::from_angle(TAU * k as f64 / 20.0) * radius
+            })
+            .collect();
+        SegmentTable::polygon(&v).unwrap()
     }
 
     fn l_shape() -> SegmentTable {
@@ -570,31 +623,24 @@ mod tests {
 
     #[test]
     fn pairs_are_found_and_ids_kept() {
-        let steps = |t: &SegmentTable| LaneSegments::new(t).steps;
-        // Stadium: the flat walls 0 and 2 are a pair, cast at 2.
-        let s = steps(&stadium(1.0));
-        assert!(matches!(
-            s.as_slice(),
-            [Step::Arc(_), Step::Pair(a, b), Step::Arc(_)] if a.id == 0.0 && b.id == 2.0
-        ));
-        // Sinai: (0, 2) and (1, 3), then the hole.
-        let s = steps(&sinai(2.0, 1.0));
-        assert!(matches!(
-            s.as_slice(),
-            [Step::Pair(a, b), Step::Pair(c, e), Step::Arc(h)]
-                if (a.id, b.id, c.id, e.id, h.id) == (0.0, 2.0, 1.0, 3.0, 4.0)
-        ));
-        // Mushroom: only the stem's sides (1, 5) face opposite ways.
-        let s = steps(&mushroom(1.0, 0.3, 1.0));
-        let ids: Vec<String> = s
-            .iter()
-            .map(|st| match st {
-                Step::Flat(f) => format!("{}", f.id),
+        let ids = |t: &SegmentTable| -> Vec<String> {
+            let l = LaneSegments::new(t);
+            let flats = l.steps.iter().map(|st| match st {
+                Step::One(f) => format!("{}", f.id),
                 Step::Pair(a, b) => format!("{}+{}", a.id, b.id),
-                Step::Arc(c) => format!("arc{}", c.id),
-            })
-            .collect();
-        assert_eq!(ids, ["0", "2", "arc3", "4", "1+5"]);
+            });
+            let arcs = l.arcs.iter().map(|c| format!("arc{}", c.id));
+            flats.chain(arcs).collect()
+        };
+        // Stadium: the flat walls 0 and 2 are a pair, cast at 2.
+        assert_eq!(ids(&stadium(1.0)), ["0+2", "arc1", "arc3"]);
+        // Sinai: (0, 2) and (1, 3), then the hole.
+        assert_eq!(ids(&sinai(2.0, 1.0)), ["0+2", "1+3", "arc4"]);
+        // Mushroom: only the stem's sides (1, 5) face opposite ways.
+        assert_eq!(
+            ids(&mushroom(1.0, 0.3, 1.0)),
+            ["0", "2", "4", "1+5", "arc3"]
+        );
     }
 
     #[test]
@@ -723,12 +769,11 @@ mod tests {
 
 #[cfg(test)]
 mod counts {
-    use std::f64::consts::{FRAC_PI_2, PI};
-
     use rand::{Rng, SeedableRng};
     use rand_pcg::Pcg64;
     use spinball_geometry::{Boundary, DVec2, Stadium};
 
+    use super::tests::{alternating_twenty_gon, mushroom, stadium};
     use super::*;
     use crate::geom::LaneStadium;
     use crate::lanes::counted::{Counted, take};
@@ -759,41 +804,13 @@ mod counts {
 
     #[test]
     fn operation_counts_per_cast() {
-        let p = DVec2::new;
-        let line = |a, b| Segment::Line(LineSegment::new(a, b).unwrap());
-        let arc = |c, r, s, w| Segment::Arc(ArcSegment::new(c, r, s, w).unwrap());
         let st = Stadium::new(1.0).unwrap();
         per_cast("stadium", &st, &LaneStadium::new(1.0));
-        let seg = SegmentTable::new(vec![
-            line(p(-1.0, -1.0), p(1.0, -1.0)),
-            arc(p(1.0, 0.0), 1.0, -FRAC_PI_2, PI),
-            line(p(1.0, 1.0), p(-1.0, 1.0)),
-            arc(p(-1.0, 0.0), 1.0, FRAC_PI_2, PI),
-        ])
-        .unwrap();
+        let seg = stadium(1.0);
         per_cast("stadium-seg", &seg, &LaneSegments::new(&seg).view::<true>());
-        let (r, w, h) = (1.0, 0.3, 1.0);
-        let m = SegmentTable::new(vec![
-            line(p(-w, -h), p(w, -h)),
-            line(p(w, -h), p(w, 0.0)),
-            line(p(w, 0.0), p(r, 0.0)),
-            arc(DVec2::ZERO, r, 0.0, PI),
-            line(p(-r, 0.0), p(-w, 0.0)),
-            line(p(-w, 0.0), p(-w, -h)),
-        ])
-        .unwrap();
+        let m = mushroom(1.0, 0.3, 1.0);
         per_cast("mushroom", &m, &LaneSegments::new(&m).view::<true>());
-        let v: Vec<DVec2> = (0..20)
-            .map(|k| {
-                let radius = if k % 2 == 0 {
-                    1.0
-                } else {
-                    0.8 + 0.01 * k as f64
-                };
-                DVec2::from_angle(TAU * k as f64 / 20.0) * radius
-            })
-            .collect();
-        let g = SegmentTable::polygon(&v).unwrap();
+        let g = alternating_twenty_gon();
         per_cast("20-gon", &g, &LaneSegments::new(&g).view::<false>());
     }
 }

@@ -1,14 +1,15 @@
 //! The Sinai table in lanes: the square box and the convex disk.
 //!
-//! Both candidates are cast for every lane (the box by
-//! [`cast_box`](super::rectangle::cast_box), the disk by the shared
-//! convex-circle arithmetic) and the disk is kept only where it is strictly
-//! earlier, the scalar's tie rule (a box wall has the lower id).
+//! Both candidates are cast for every lane as undivided fractions (the box
+//! wall ahead by [`BoxAhead`], the disk by the shared convex-circle root),
+//! compared cross-multiplied, the disk kept only where it is strictly
+//! earlier (the scalar's tie rule: a box wall has the lower id), and the
+//! winner's fraction divided once, as in the scalar cast.
 
-use super::rectangle::cast_box;
-use super::round::{Ray, Round, convex};
+use super::rectangle::BoxAhead;
+use super::round::{Ray, Round, contact_at, convex_root};
 use super::{Geom, LaneHit};
-use crate::lanes::Lanes;
+use crate::lanes::{Lanes, MaskOps};
 
 /// [`Sinai`](spinball_geometry::Sinai) in lanes: the box and the disk; the
 /// disk only if strictly earlier (ties go to the lower wall id, a box wall).
@@ -34,21 +35,28 @@ impl Geom for LaneSinai {
     #[inline(always)]
     fn cast<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> LaneHit<L> {
         let zero = L::splat(0.0);
-        let all = zero.eq(zero);
-        let wall = cast_box(self.l, self.l, x, y, vx, vy);
-        let ray = Ray::new(x, y, vx, vy);
-        let disk = convex::<L, false>(zero, zero, &self.disk, &ray, all);
-        // Lanes that miss the disk: an infinite flight time, never earlier.
-        let disk_time = L::select(disk.ok, disk.time, L::splat(f64::INFINITY));
-        let d = disk_time.lt(wall.time);
+        let b = BoxAhead::new(self.l, self.l, x, y, vx, vy);
+        let ray = Ray::new_undivided(x, y, vx, vy);
+        let root = convex_root(zero, zero, &self.disk, &ray);
+        let num = root.num.max(zero);
+        // The disk if strictly earlier (`num·speed < dist·|v|²`) or if the
+        // ball meets no box wall; ties go to the box (lower ids).
+        let disk_wins = root
+            .ok
+            .and(b.ok.not().or((num * b.speed).lt(b.dist * ray.a)));
+        // One division, of the winner's fraction.
+        let time = L::select(disk_wins, num, b.dist) / L::select(disk_wins, ray.a, b.speed);
+        let wall = b.land(self.l, self.l, x, y, vx, vy, time);
+        let (px, py, nx, ny) =
+            contact_at::<L, false>(zero, zero, &root, &ray, time, &self.disk, disk_wins);
         LaneHit {
-            time: L::select(d, disk_time, wall.time),
-            px: L::select(d, disk.px, wall.px),
-            py: L::select(d, disk.py, wall.py),
-            nx: L::select(d, disk.nx, wall.nx),
-            ny: L::select(d, disk.ny, wall.ny),
-            curvature: L::select(d, L::splat(self.k), wall.curvature),
-            wall: L::select(d, L::splat(4.0), wall.wall),
+            time: L::select(disk_wins, time, wall.time),
+            px: L::select(disk_wins, px, wall.px),
+            py: L::select(disk_wins, py, wall.py),
+            nx: L::select(disk_wins, nx, wall.nx),
+            ny: L::select(disk_wins, ny, wall.ny),
+            curvature: L::select(disk_wins, L::splat(self.k), wall.curvature),
+            wall: L::select(disk_wins, L::splat(4.0), wall.wall),
         }
     }
 }

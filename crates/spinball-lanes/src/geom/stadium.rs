@@ -3,9 +3,11 @@
 //! Bunimovich's stadium is the paper's main table, so it has a kernel of its
 //! own rather than going through the general segment table: one flat
 //! crossing test decides between the flat wall and the cap on that side,
-//! and only that cap is cast against (one square root per cast).
+//! and only that cap is cast against (one square root per cast); the flat
+//! wall's flight time and the cap's are then one division of the chosen
+//! fraction (`dist / |v_y|` or `num / |v|²`), as in the scalar cast.
 
-use super::round::{Ray, Round, concave};
+use super::round::{Contact, Ray, Round, concave_root, contact_at};
 use super::{Geom, LaneHit};
 use crate::lanes::{Lanes, MaskOps};
 
@@ -48,17 +50,29 @@ impl Geom for LaneStadium {
         let x_scaled = x * avy + vx * dist;
         let moving_y = vy.ne(zero);
         let flat = moving_y.and(x_scaled.abs().le(avy * self.reach));
-        let flat_time = dist / avy;
-        let flat_x = (x + vx * flat_time).clamp(-a, a);
         // Otherwise the cap on the side of the crossing (of v_x if v_y = 0).
         let side = L::select(moving_y, x_scaled, vx);
         let right = side.gt(zero);
         let cx = L::select(right, L::splat(a), L::splat(-a));
-        let ray = Ray::new(x, y, vx, vy);
-        let cap = concave::<L, true, true>(cx, zero, &self.cap, &ray, flat.not());
+        let ray = Ray::new_undivided(x, y, vx, vy);
+        let root = concave_root::<L, true>(cx, zero, &self.cap, &ray);
+        // One division: the flat wall's fraction or the cap's.
+        let time = L::select(flat, dist, root.num.max(zero)) / L::select(flat, avy, ray.a);
+        let flat_x = (x + vx * time).clamp(-a, a);
+        let cap_care = flat.not().and(root.ok);
+        let (cap_px, cap_py, radx, rady) =
+            contact_at::<L, true>(cx, zero, &root, &ray, time, &self.cap, cap_care);
+        let cap = Contact {
+            ok: root.ok,
+            time,
+            px: cap_px,
+            py: cap_py,
+            nx: -radx,
+            ny: -rady,
+        };
         let cap_time = L::select(cap.ok, cap.time, L::splat(f64::NAN));
         LaneHit {
-            time: L::select(flat, flat_time, cap_time),
+            time: L::select(flat, time, cap_time),
             px: L::select(flat, flat_x, cap.px),
             py: L::select(flat, L::select(up, one, -one), cap.py),
             nx: L::select(flat, zero, cap.nx),
