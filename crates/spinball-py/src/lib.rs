@@ -47,6 +47,7 @@ fn _spinball(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<tables::PyLine>()?;
     m.add_class::<tables::PyArc>()?;
     m.add_function(wrap_pyfunction!(tables::table, m)?)?;
+    m.add_function(wrap_pyfunction!(tables::table_file, m)?)?;
     m.add_class::<billiard::PyBilliard>()?;
     m.add_class::<billiard::PyTrajectory>()?;
     m.add_class::<ftle::PyFtleDistribution>()?;

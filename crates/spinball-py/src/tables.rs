@@ -11,8 +11,8 @@ use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyString};
 use spinball_geometry::{
-    ArcSegment, Boundary, Circle, DVec2, LineSegment, Rectangle, Segment, SegmentTable, Sinai,
-    Stadium, Table,
+    ArcSegment, Boundary, Built, Circle, DVec2, LineSegment, Rectangle, Segment, SegmentTable,
+    Sinai, Stadium, Table, TableFile,
 };
 
 use crate::args::{pair, rows};
@@ -266,6 +266,11 @@ pub fn table(py: Python<'_>, spec: &str) -> PyResult<Py<PyAny>> {
     let t: Table = spec
         .parse()
         .map_err(|e| value_error(format!("table spec `{spec}`: {e}")))?;
+    builtin_object(py, t)
+}
+
+/// The Python object of a built-in table.
+fn builtin_object(py: Python<'_>, t: Table) -> PyResult<Py<PyAny>> {
     Ok(match t {
         Table::Circle(c) => Py::new(py, base(c).add_subclass(PyCircle { inner: c }))?.into_any(),
         Table::Rectangle(r) => {
@@ -274,6 +279,22 @@ pub fn table(py: Python<'_>, spec: &str) -> PyResult<Py<PyAny>> {
         Table::Stadium(s) => Py::new(py, base(s).add_subclass(PyStadium { inner: s }))?.into_any(),
         Table::Sinai(s) => Py::new(py, base(s).add_subclass(PySinai { inner: s }))?.into_any(),
     })
+}
+
+/// The table a table file describes (`.toml` or `.json`: a polygon, loops
+/// of `line` and `arc` walls with holes, or a built-in spec; the format is
+/// in docs/TABLE_FILES.md, the same files the `spinball` command line
+/// reads). Raises `ValueError` for a file that cannot be read or parsed
+/// (with the line and column) or walls that do not make a table.
+#[pyfunction]
+pub fn table_file(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Py<PyAny>> {
+    let built = TableFile::read(&path)
+        .and_then(|f| f.build())
+        .map_err(|e| value_error(e.to_string()))?;
+    match built {
+        Built::Table(t) => builtin_object(py, t),
+        Built::Segments(t) => Ok(Py::new(py, segment_table(t))?.into_any()),
+    }
 }
 
 /// A flat wall from `start` to `end` (points `(x, y)`); the table lies on

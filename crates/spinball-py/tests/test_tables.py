@@ -2,6 +2,7 @@
 ValueError with the Rust constructor's message."""
 
 import math
+import pathlib
 
 import numpy as np
 import pytest
@@ -99,3 +100,25 @@ def test_wrong_types_raise_type_error():
         sb.Billiard(42, 0.5)
     with pytest.raises(TypeError):
         sb.Table()
+
+
+TABLES = pathlib.Path(__file__).resolve().parents[3] / "docs" / "tables"
+
+
+def test_table_files_read_the_command_line_format(tmp_path):
+    mushroom = sb.table_file(TABLES / "mushroom.toml")
+    assert isinstance(mushroom, sb.SegmentTable)
+    # Half disk of radius 1 on a 0.6 x 1 stem.
+    assert mushroom.area == pytest.approx(math.pi / 2 + 0.6, abs=1e-12)
+    cell = sb.table_file(str(TABLES / "two-disk-cell.json"))
+    assert cell.area == pytest.approx(16.0 - 2 * math.pi * 0.36, abs=1e-12)
+    assert len(cell.holes) == 2
+    builtin = tmp_path / "stadium.toml"
+    builtin.write_text('builtin = "stadium:a=1"\n')
+    assert sb.table_file(builtin) == sb.Stadium(1.0)
+    bad = tmp_path / "bad.toml"
+    bad.write_text("polygon = [[0, 0], [1, 0]]\ncolour = 1\n")
+    with pytest.raises(ValueError, match="unknown field"):
+        sb.table_file(bad)
+    with pytest.raises(ValueError, match="cannot read"):
+        sb.table_file(tmp_path / "missing.toml")

@@ -47,6 +47,7 @@ from ._spinball import (
     lyapunov,
     spectrum,
     table,
+    table_file,
 )
 
 __all__ = [
@@ -71,4 +72,5 @@ __all__ = [
     "lyapunov",
     "spectrum",
     "table",
+    "table_file",
 ]

@@ -1,5 +1,6 @@
 """Type stubs of the native module ``spinball._spinball`` (re-exported by ``spinball``)."""
 
+import os
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -94,6 +95,9 @@ class SegmentTable(Table):
 
 def table(spec: str) -> Table:
     """The built-in table a spec string names (``"stadium:a=1"``)."""
+
+def table_file(path: Union[str, "os.PathLike[str]"]) -> Table:
+    """The table a ``.toml`` or ``.json`` table file describes (docs/TABLE_FILES.md)."""
 
 class Trajectory:
     """One trajectory, one array per quantity (length = collisions)."""
