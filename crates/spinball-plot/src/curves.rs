@@ -81,6 +81,23 @@ impl Job {
             sweep: plan.sweep(template, alphas)?,
         })
     }
+
+    /// As [`new`](Self::new) over any `α >= 0`, including α > 1.
+    ///
+    /// # Errors
+    /// As [`Plan::sweep_extended`].
+    pub fn extended(
+        label: impl Into<String>,
+        plan: &Plan,
+        template: Ensemble,
+        alphas: &[f64],
+    ) -> Result<Job, AnalysisError> {
+        Ok(Job {
+            label: label.into(),
+            plan: *plan,
+            sweep: plan.sweep_extended(template, alphas)?,
+        })
+    }
 }
 
 /// The results of one [`Job`].
