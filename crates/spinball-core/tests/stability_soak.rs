@@ -4,8 +4,8 @@
 //! collision: escapes (the ball farther than 1e-9 of the local wall scale
 //! outside), flights through the Sinai disk, non-finite states, step errors
 //! by kind, the worst energy error `|E − E0|/E0` and the worst `Q` error
-//! through a collision `|Q' − Q|` relative to the size of its terms
-//! (`|v∥| + α|u|` before and after).
+//! through a collision `|Q' − Q|` relative to the size of its terms and
+//! the speed (`|v∥| + α|u|` before and after, plus `|V|`).
 //!
 //! ```text
 //! # the full soak (1e9 collisions; docs/STABILITY.md has its counts)
@@ -148,6 +148,7 @@ fn soak_case(case: Case, collisions: u64, per: u64, seed: u64) -> Counts {
         };
         counts.trajectories += 1;
         let e0 = billiard.energy(&start);
+        let v0 = (2.0 * e0).sqrt();
         let n = per.min(collisions - counts.collisions);
         let mut prev = start.position;
         for _ in 0..n {
@@ -170,14 +171,17 @@ fn soak_case(case: Case, collisions: u64, per: u64, seed: u64) -> Counts {
                     prev = st.position;
                     let de = (billiard.energy(st) - e0).abs() / e0;
                     counts.worst_energy = counts.worst_energy.max(de);
-                    // Relative to the size of Q's terms: at α = 1e12,
-                    // αu ~ 1e6 |V| and Q rounds at ε·1e6 |V|.
+                    // Relative to the size of Q's terms and the speed: at
+                    // α = 1e12, αu ~ 1e6 |V| and Q rounds at ε·1e6 |V|; at
+                    // near-normal incidence v∥ is small but carries the
+                    // rounding of the normal part, ε |V|.
                     let a = case.alpha;
                     let terms = c.v_par_before.abs()
                         + a * c.spin_before.abs()
                         + c.v_par_after.abs()
-                        + a * c.spin_after.abs();
-                    let dq = (c.q_after(a) - c.q).abs() / terms.max(f64::MIN_POSITIVE);
+                        + a * c.spin_after.abs()
+                        + v0;
+                    let dq = (c.q_after(a) - c.q).abs() / terms;
                     counts.worst_q = counts.worst_q.max(dq);
                 }
                 Err(StepError::Stuck { .. }) => {
