@@ -77,14 +77,7 @@ impl spinball_core::Observer for Guard<'_> {
         );
         if let Table::Sinai(s) = self.table {
             // Closest approach of the flight segment to the disk centre.
-            let (a, b) = (self.prev.position, after.position);
-            let ab = b - a;
-            let f = if ab.length_squared() > 0.0 {
-                (-a.dot(ab) / ab.length_squared()).clamp(0.0, 1.0)
-            } else {
-                0.0
-            };
-            let closest = (a + ab * f).length();
+            let closest = common::closest_to_origin(self.prev.position, after.position);
             assert!(
                 closest >= s.r() * (1.0 - 1e-12),
                 "{}: flew through the disk ({closest})",

@@ -5,6 +5,8 @@
 //! contact point's tangential velocity exactly at every α (item 6).
 //! Reproducers are the issue's, literally.
 
+mod common;
+
 use glam::DVec2;
 use proptest::prelude::*;
 use spinball_core::{
@@ -63,17 +65,8 @@ struct DiskGuard {
 
 impl Observer for DiskGuard {
     fn observe(&mut self, c: &spinball_core::Collision, after: &State) {
-        let (a, b) = (self.prev.position, after.position);
-        let ab = b - a;
-        let f = if ab.length_squared() > 0.0 {
-            (-a.dot(ab) / ab.length_squared()).clamp(0.0, 1.0)
-        } else {
-            0.0
-        };
-        assert!(
-            (a + ab * f).length() >= self.r * (1.0 - 1e-12),
-            "through the disk"
-        );
+        let closest = common::closest_to_origin(self.prev.position, after.position);
+        assert!(closest >= self.r * (1.0 - 1e-12), "through the disk");
         let e = after.energy(&self.law);
         self.worst_energy = self.worst_energy.max((e - self.e0).abs() / self.e0);
         let scale = (2.0 * self.e0).sqrt();

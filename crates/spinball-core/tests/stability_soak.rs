@@ -17,11 +17,13 @@
 //!
 //! The non-ignored test runs the same cases for 2e6 collisions in all.
 
+mod common;
+
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use spinball_core::{Billiard, Sampler, SpinLaw, State, StepError, ic_rng};
-use spinball_geometry::{Boundary, DVec2, Table};
+use spinball_geometry::{DVec2, Table};
 
 /// One soak case: a table, α and a speed scale for the sampled states.
 #[derive(Clone, Copy, Debug)]
@@ -122,13 +124,7 @@ fn through_disk(table: &Table, a: DVec2, b: DVec2) -> bool {
     let Table::Sinai(s) = table else {
         return false;
     };
-    let ab = b - a;
-    let f = if ab.length_squared() > 0.0 {
-        (-a.dot(ab) / ab.length_squared()).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (a + ab * f).length() < s.r() * (1.0 - 1e-9)
+    common::closest_to_origin(a, b) < s.r() * (1.0 - 1e-9)
 }
 
 /// `collisions` collisions of `case`, trajectories of at most `per` each.

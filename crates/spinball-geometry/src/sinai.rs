@@ -43,8 +43,8 @@ impl Sinai {
     /// [`GeometryError::ObstacleTooLarge`] if `r >= l` (the disk would touch or
     /// cut the walls and split the table); [`GeometryError::OutOfRange`] for
     /// lengths outside `[1e-60, 1e60]` or `r / l` outside `[1e-6, 1 − 1e-12]`
-    /// ([`MIN_SINAI_RATIO`](crate::error::MIN_SINAI_RATIO),
-    /// [`MIN_SINAI_GAP`](crate::error::MIN_SINAI_GAP)).
+    /// ([`MIN_SINAI_RATIO`],
+    /// [`MIN_SINAI_GAP`]).
     pub fn new(l: f64, r: f64) -> Result<Self, GeometryError> {
         let l = length("l", l)?;
         let r = length("r", r)?;
