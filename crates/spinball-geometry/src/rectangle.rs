@@ -26,7 +26,6 @@ use crate::shape::Shape;
 pub struct Rectangle {
     l: f64,
     h: f64,
-    slack: f64,
 }
 
 /// Relative tolerance of [`Rectangle::contains`] on each axis: the walls'
@@ -43,11 +42,7 @@ impl Rectangle {
     pub fn new(l: f64, h: f64) -> Result<Self, GeometryError> {
         let l = length("l", l)?;
         let h = length("h", h)?;
-        Ok(Rectangle {
-            l,
-            h,
-            slack: 64.0 * f64::EPSILON * l.max(h),
-        })
+        Ok(Rectangle { l, h })
     }
 
     /// The unit square `[-1, 1]²` used for the paper's Lyapunov runs.
