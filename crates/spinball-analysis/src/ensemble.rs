@@ -325,8 +325,7 @@ impl<B: Boundary + Sync> Ensemble<B> {
         billiard: &Billiard<&B>,
         indices: Range<u64>,
     ) -> Result<Vec<TrajectoryStats>, AnalysisError> {
-        let lanes = LaneBilliard::new(&self.table, self.law)
-            .map_err(|e| AnalysisError::invalid("engine", e.to_string()))?;
+        let lanes = LaneBilliard::new(&self.table, self.law).map_err(AnalysisError::Lanes)?;
         map_chunks(indices, CHUNK as u64, self.threads, |range| {
             let lo = range.start;
             let mut starts = Vec::with_capacity(CHUNK);
@@ -381,7 +380,15 @@ impl<B: Boundary + Sync> Ensemble<B> {
                     Ok(_) => AnalysisError::EngineMismatch { index },
                 }
             }
-            other => AnalysisError::invalid("engine", other.to_string()),
+            LanesError::Perturbation { index, source } => AnalysisError::Perturbation {
+                index: first + index as u64,
+                source,
+            },
+            // The same option checks as the scalar path's, so the same error.
+            LanesError::InvalidOption { name, reason } => {
+                AnalysisError::InvalidOption { name, reason }
+            }
+            other => AnalysisError::Lanes(other),
         }
     }
 }

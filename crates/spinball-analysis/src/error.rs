@@ -1,7 +1,8 @@
 //! Why an analysis could not run.
 
-use spinball_core::{LaunchError, SpinLawError, StepError};
+use spinball_core::{LaunchError, PerturbationError, SpinLawError, StepError};
 use spinball_geometry::GeometryError;
+use spinball_lanes::LanesError;
 use thiserror::Error;
 
 /// An analysis that could not run or finish.
@@ -32,6 +33,20 @@ pub enum AnalysisError {
         /// The step error.
         source: StepError,
     },
+    /// The finite-difference perturbation cannot measure anything for this
+    /// initial condition on this table (the same on both engines).
+    #[error("initial condition {index}: {source}")]
+    Perturbation {
+        /// Index of the initial condition (0 for single trajectories).
+        index: u64,
+        /// Why.
+        source: PerturbationError,
+    },
+    /// The lane engine refused the run for a reason the scalar path does
+    /// not have (an instruction set this CPU lacks, a table without a lane
+    /// form).
+    #[error("lane engine: {0}")]
+    Lanes(LanesError),
     /// The lane kernels found a trajectory going non-finite where the scalar
     /// path, rerun on the same initial condition, did not fail. Never seen;
     /// report it, and run the ensemble with `Engine::Scalar` meanwhile.
@@ -67,6 +82,9 @@ impl AnalysisError {
         match self {
             AnalysisError::Launch { source, .. } => AnalysisError::Launch { index, source },
             AnalysisError::Step { source, .. } => AnalysisError::Step { index, source },
+            AnalysisError::Perturbation { source, .. } => {
+                AnalysisError::Perturbation { index, source }
+            }
             other => other,
         }
     }

@@ -14,10 +14,11 @@
 //! the finite-time Lyapunov exponent (FTLE) of the trajectory.
 
 use rand::Rng;
-use spinball_core::{Ball, Billiard, State, TangentVector};
+use spinball_core::{Ball, Billiard, Perturbation, State, TangentVector};
 use spinball_geometry::Boundary;
 
 use crate::error::AnalysisError;
+use spinball_core::perturbation::check_delta0;
 
 /// The initial direction of the shadow or tangent vector (it lives in
 /// `spinball-core`, shared with the lane kernels).
@@ -30,7 +31,11 @@ pub use spinball_core::random_direction;
 pub enum Method {
     /// The paper's finite-difference Benettin method with initial separation `delta0`.
     FiniteDifference {
-        /// Separation of the shadow trajectory (the paper: `1e-7`).
+        /// Separation of the shadow trajectory (the paper: `1e-7`), in units
+        /// of the table's unit length (positions) and the ball's speed
+        /// (velocities and spin), each rounded to a power of two: exactly
+        /// `1e-7` on the paper's tables. See [`spinball_core::perturbation`].
+        /// Must lie in `[1e-11, 1e-3]`.
         delta0: f64,
     },
     /// Exact tangent dynamics.
@@ -61,15 +66,11 @@ impl Method {
     /// Check the method's parameters.
     ///
     /// # Errors
-    /// [`AnalysisError::InvalidOption`] for `delta0` not finite and positive.
+    /// [`AnalysisError::InvalidOption`] for `delta0` outside
+    /// `[MIN_DELTA0, MAX_DELTA0]` = `[1e-11, 1e-3]`.
     pub fn validate(&self) -> Result<(), AnalysisError> {
-        if let Method::FiniteDifference { delta0 } = *self
-            && !(delta0.is_finite() && delta0 > 0.0)
-        {
-            return Err(AnalysisError::invalid(
-                "delta0",
-                format!("must be finite and > 0, got {delta0}"),
-            ));
+        if let Method::FiniteDifference { delta0 } = *self {
+            check_delta0(delta0).map_err(|e| AnalysisError::invalid("delta0", e.to_string()))?;
         }
         Ok(())
     }
@@ -246,7 +247,9 @@ pub fn largest_lyapunov<B: Boundary, R: Rng + ?Sized>(
                 let dz = d.to_array();
                 State::from_array(std::array::from_fn(|i| z[i] + dz[i]))
             };
-            let mut shadow = Ball::new(offset(&ball, direction * delta0), &law)?;
+            let perturbation = Perturbation::new(billiard.table(), &start, &law, delta0)
+                .map_err(|source| AnalysisError::Perturbation { index: 0, source })?;
+            let mut shadow = Ball::new(offset(&ball, perturbation.offset(direction)), &law)?;
             for n in 1..=options.collisions {
                 let c = billiard.step(&mut ball)?;
                 billiard.step(&mut shadow)?;
@@ -254,7 +257,7 @@ pub fn largest_lyapunov<B: Boundary, R: Rng + ?Sized>(
                 let a = ball.state().to_array();
                 let b = shadow.state().to_array();
                 let d = TangentVector::from_array(std::array::from_fn(|i| b[i] - a[i]));
-                let dist = d.norm();
+                let dist = perturbation.distance(&d);
                 if !(dist > 0.0 && dist.is_finite()) {
                     return Err(AnalysisError::invalid(
                         "delta0",

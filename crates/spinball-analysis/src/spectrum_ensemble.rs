@@ -238,7 +238,7 @@ pub fn spectrum_ensemble<B: Boundary + Sync>(
                         .err()
                         .unwrap_or(AnalysisError::EngineMismatch { index: i }))
                 }
-                Err(other) => Err(AnalysisError::invalid("engine", other.to_string())),
+                Err(other) => Err(AnalysisError::Lanes(other)),
             }
         })?,
         None => map_indices(indices, threads, |i| {

@@ -8,6 +8,7 @@ use crate::error::{LaunchError, StepError};
 use crate::observer::Observer;
 use crate::spin_law::SpinLaw;
 use crate::state::{Ball, State};
+use crate::stuck::watch_zero_time;
 use crate::tangent::{Jacobian, TangentFrame, TangentVector};
 
 /// A spinning billiard: a table `B` and a [`SpinLaw`]. Generic over the table
@@ -127,14 +128,18 @@ impl<B: Boundary> Billiard<B> {
     /// Fly to the next wall and collide (one step of the collision map).
     ///
     /// # Errors
-    /// [`StepError`] if no wall lies ahead or a value turns non-finite; the
-    /// ball is left unchanged then.
+    /// [`StepError`] if no wall lies ahead, a value turns non-finite, or the
+    /// ball is stuck ([`StepError::Stuck`]: more than
+    /// [`MAX_ZERO_TIME_RUN`](crate::MAX_ZERO_TIME_RUN) zero-time collisions
+    /// in a row); the ball is left unchanged then.
     #[inline]
     pub fn step(&self, ball: &mut Ball) -> Result<Collision, StepError> {
         let hit = self.next_hit(&ball.state)?;
+        let zero_run = watch_zero_time(ball, &hit)?;
         let (v, u) = self.reflect(ball, &hit);
         let before = ball.state;
         ball.state = State::new(hit.point, v, u);
+        ball.zero_run = zero_run;
         Ok(self.record(hit, &before, v, u))
     }
 
@@ -174,6 +179,7 @@ impl<B: Boundary> Billiard<B> {
         tangents: &mut [TangentVector],
     ) -> Result<Collision, StepError> {
         let hit = self.next_hit(&ball.state)?;
+        let zero_run = watch_zero_time(ball, &hit)?;
         let (v, u) = self.reflect(ball, &hit);
         let before = ball.state;
         let frame = TangentFrame::new(&self.law, &hit, &before, v);
@@ -182,6 +188,7 @@ impl<B: Boundary> Billiard<B> {
             frame.apply(tv);
         }
         ball.state = State::new(hit.point, v, u);
+        ball.zero_run = zero_run;
         Ok(self.record(hit, &before, v, u))
     }
 

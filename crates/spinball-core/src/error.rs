@@ -33,6 +33,55 @@ pub enum LaunchError {
     /// The position is outside the table.
     #[error("position ({}, {}) is outside the table", .0.x, .0.y)]
     Outside(DVec2),
+    /// A speed `f64` cannot run: the phase-space speed `|V| = √(|v|² + αu²)`
+    /// or the translational speed `|v|` is outside `[MIN_SPEED, MAX_SPEED]`,
+    /// where their squares (times a table's squared size) would become
+    /// subnormal or overflow.
+    #[error(
+        "{what} = {value:e} is outside the range f64 can run, [{min:e}, {max:e}] (its square times a table's squared size must stay a normal, finite f64)"
+    )]
+    Speed {
+        /// `speed |V|` or `translational speed |v|`.
+        what: &'static str,
+        /// The offending speed.
+        value: f64,
+        /// Smallest accepted speed.
+        min: f64,
+        /// Largest accepted speed.
+        max: f64,
+    },
+}
+
+/// A finite-difference separation that cannot measure anything on this
+/// table and state.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+#[non_exhaustive]
+pub enum PerturbationError {
+    /// `δ0` is outside the documented range.
+    #[error(
+        "finite-difference separation delta0 = {delta0:e} is outside [{min:e}, {max:e}] (in units of the table's unit length and the ball's speed): below it rounding (2.2e-16/delta0) swamps the separation, above it the shadow leaves the linear regime"
+    )]
+    OutOfRange {
+        /// The separation asked for.
+        delta0: f64,
+        /// Smallest accepted.
+        min: f64,
+        /// Largest accepted.
+        max: f64,
+    },
+    /// The table's coordinates are too large for the position part of the
+    /// perturbation (`δ0` times the table's unit length) to be resolved: an
+    /// elongated table (thin side tiny against the long one) or one far from
+    /// the origin.
+    #[error(
+        "finite-difference position separation {separation:e} is below 1e4 ulps of the table's coordinates (which reach {extent:e}): f64 cannot resolve it; use the tangent method on this table, or a larger delta0 (the largest accepted is 1e-3)"
+    )]
+    Unresolved {
+        /// `δ0` times the table's unit length (a power of two).
+        separation: f64,
+        /// Largest coordinate of the table's bounding box.
+        extent: f64,
+    },
 }
 
 /// A collision step that could not be taken.
@@ -47,6 +96,22 @@ pub enum StepError {
         position: DVec2,
         /// Velocity at the start of the step.
         velocity: DVec2,
+    },
+    /// The ball is stuck: [`MAX_ZERO_TIME_RUN`](crate::MAX_ZERO_TIME_RUN)
+    /// collisions in a row took zero time. This is what a ball started on a
+    /// wall and moving along it does when it slides into a curved wall
+    /// tangent to it (the stadium's junctions): it stays at the contact
+    /// forever. Start it off the wall or not parallel to it.
+    #[error(
+        "the ball is stuck at ({}, {}) moving ({}, {}): {collisions} collisions in a row took zero time (a ball moving along a wall into a tangent curved wall); start it off the wall or not parallel to it", .position.x, .position.y, .velocity.x, .velocity.y
+    )]
+    Stuck {
+        /// Position at the start of the step.
+        position: DVec2,
+        /// Velocity at the start of the step.
+        velocity: DVec2,
+        /// Zero-time collisions in a row.
+        collisions: u32,
     },
     /// The step produced a non-finite time or state.
     #[error("the step produced a non-finite value at ({}, {})", .position.x, .position.y)]

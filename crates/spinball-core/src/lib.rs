@@ -39,19 +39,23 @@ pub mod collision;
 pub mod direction;
 pub mod error;
 pub mod observer;
+pub mod perturbation;
 pub mod sampler;
 pub mod spin_law;
 pub mod state;
+pub mod stuck;
 pub mod tangent;
 
 pub use billiard::{Billiard, Run};
 pub use collision::Collision;
 pub use direction::random_direction;
-pub use error::{LaunchError, SpinLawError, StepError};
+pub use error::{LaunchError, PerturbationError, SpinLawError, StepError};
 pub use observer::{EnergyMonitor, Observer, Recorder};
+pub use perturbation::{MAX_DELTA0, MIN_DELTA0, Perturbation};
 pub use sampler::{PAPER_SHRINK, PAPER_SPIN_FRACTION, Sampler, UnknownSampler, ic_rng};
 pub use spin_law::SpinLaw;
-pub use state::{Ball, State};
+pub use state::{Ball, MAX_SPEED, MIN_SPEED, State};
+pub use stuck::MAX_ZERO_TIME_RUN;
 pub use tangent::{Jacobian, MAX_QR_INTERVAL, TangentFrame, TangentVector, tangent_collision};
 
 pub use rand_pcg::Pcg64;

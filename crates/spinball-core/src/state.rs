@@ -6,6 +6,14 @@ use glam::DVec2;
 use crate::error::LaunchError;
 use crate::spin_law::SpinLaw;
 
+/// Smallest speed (`|V|` and `|v|`) a ball may have: with table sizes of at
+/// least `1e-60` (`spinball_geometry::error::MIN_LENGTH`) every square the
+/// casts form stays above `1e-240`, far from the subnormal range.
+pub const MIN_SPEED: f64 = 1e-60;
+/// Largest speed a ball may have: with table sizes of at most `1e60` every
+/// square the casts form stays below `1e245`, far from overflow.
+pub const MAX_SPEED: f64 = 1e60;
+
 /// Position `x`, velocity `v` and spin `u = rω` (the signed surface speed),
 /// the five coordinates of paper §II.C. Mass is 1.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -82,6 +90,8 @@ impl State {
 pub struct Ball {
     pub(crate) state: State,
     pub(crate) inv_shell: f64,
+    /// Zero-time collisions in a row just taken (see `StepError::Stuck`).
+    pub(crate) zero_run: u32,
 }
 
 impl Ball {
@@ -90,12 +100,30 @@ impl Ball {
     /// hair outside a wall uses.
     ///
     /// # Errors
-    /// [`LaunchError::NonFinite`], [`LaunchError::AtRest`].
+    /// [`LaunchError::NonFinite`], [`LaunchError::AtRest`], and
+    /// [`LaunchError::Speed`] for `|V|` or `|v|` outside
+    /// `[MIN_SPEED, MAX_SPEED]` = `[1e-60, 1e60]`.
     pub fn new(state: State, law: &SpinLaw) -> Result<Self, LaunchError> {
         state.validate()?;
+        let norm2 = law.norm2(state.velocity, state.spin);
+        for (what, square) in [
+            ("speed |V|", norm2),
+            ("translational speed |v|", state.velocity.length_squared()),
+        ] {
+            let value = square.sqrt();
+            if !(MIN_SPEED..=MAX_SPEED).contains(&value) {
+                return Err(LaunchError::Speed {
+                    what,
+                    value,
+                    min: MIN_SPEED,
+                    max: MAX_SPEED,
+                });
+            }
+        }
         Ok(Ball {
             state,
-            inv_shell: 1.0 / law.norm2(state.velocity, state.spin),
+            inv_shell: 1.0 / norm2,
+            zero_run: 0,
         })
     }
 

@@ -11,7 +11,7 @@ use std::f64::consts::TAU;
 
 use glam::DVec2;
 
-use crate::error::{GeometryError, finite, positive};
+use crate::error::{GeometryError, coordinate, finite, length};
 use crate::line::WallHit;
 
 /// A circular wall. See the [module docs](self) for the orientation rule.
@@ -39,16 +39,17 @@ impl ArcSegment {
     ///
     /// # Errors
     /// [`GeometryError::NonFinite`], [`GeometryError::NonPositive`] for the
-    /// radius, [`GeometryError::BadSweep`] unless `0 < |sweep| <= 2π`.
+    /// radius, [`GeometryError::OutOfRange`] for a radius outside
+    /// `[1e-60, 1e60]` or a centre coordinate beyond `±1e60`, [`GeometryError::BadSweep`] unless `0 < |sweep| <= 2π`.
     pub fn new(
         center: DVec2,
         radius: f64,
         start_angle: f64,
         sweep: f64,
     ) -> Result<Self, GeometryError> {
-        finite("center.x", center.x)?;
-        finite("center.y", center.y)?;
-        let radius = positive("radius", radius)?;
+        coordinate("center.x", center.x)?;
+        coordinate("center.y", center.y)?;
+        let radius = length("radius", radius)?;
         finite("start_angle", start_angle)?;
         finite("sweep", sweep)?;
         if !(sweep != 0.0 && sweep.abs() <= TAU * (1.0 + 1e-12)) {

@@ -150,6 +150,18 @@ pub trait Boundary {
         None
     }
 
+    /// The length the table is measured in: `s` for a table scaled by `s`
+    /// from its reference shape, and 1 for every table of the paper (unit
+    /// circle, unit square, stadium with unit caps, Sinai box of half-side 2).
+    /// Finite-difference perturbations scale with it.
+    ///
+    /// Default: [`length_scale`](Boundary::length_scale). Built-in tables
+    /// override it: circle `R`, rectangle `min(l, h)`, stadium 1 (its cap
+    /// radius), Sinai `l / 2`.
+    fn unit_length(&self) -> f64 {
+        self.length_scale()
+    }
+
     /// Characteristic size of the table (half the diagonal of its bounding box).
     /// Geometric tolerances are this times a small multiple of machine epsilon.
     fn length_scale(&self) -> f64 {
@@ -221,6 +233,9 @@ impl<B: Boundary> Boundary for &B {
     }
     fn length_scale(&self) -> f64 {
         (**self).length_scale()
+    }
+    fn unit_length(&self) -> f64 {
+        (**self).unit_length()
     }
     fn sample_interior<R: Rng + ?Sized>(&self, rng: &mut R, shrink: f64) -> DVec2 {
         (**self).sample_interior(rng, shrink)

@@ -12,7 +12,7 @@ use glam::DVec2;
 use crate::aabb::Aabb;
 use crate::arc::cast_concave_circle;
 use crate::boundary::Boundary;
-use crate::error::{GeometryError, positive};
+use crate::error::{GeometryError, length};
 use crate::hit::Hit;
 use crate::shape::Shape;
 
@@ -30,10 +30,12 @@ impl Circle {
     /// A disk of the given radius centred at the origin.
     ///
     /// # Errors
-    /// [`GeometryError::NonFinite`] or [`GeometryError::NonPositive`].
+    /// [`GeometryError::NonFinite`], [`GeometryError::NonPositive`], or
+    /// [`GeometryError::OutOfRange`] outside
+    /// `[MIN_LENGTH, MAX_LENGTH]` = `[1e-60, 1e60]` (see [`crate::error::MAX_LENGTH`]).
     pub fn new(radius: f64) -> Result<Self, GeometryError> {
         Ok(Circle {
-            radius: positive("radius", radius)?,
+            radius: length("radius", radius)?,
         })
     }
 
@@ -74,6 +76,10 @@ impl Boundary for Circle {
         Aabb::new(DVec2::splat(-self.radius), DVec2::splat(self.radius))
     }
 
+    /// The radius.
+    fn unit_length(&self) -> f64 {
+        self.radius
+    }
     fn perimeter(&self) -> f64 {
         TAU * self.radius
     }

@@ -33,6 +33,69 @@ pub enum GeometryError {
         /// Half-side of the square.
         l: f64,
     },
+    /// A size that `f64` cannot run: its square (times the square of any
+    /// speed `launch` accepts) would overflow or become subnormal, or the
+    /// table's coordinates could not resolve its thinnest part.
+    #[error(
+        "table parameter `{name}` = {value:e} is outside the range that f64 can run, [{min:e}, {max:e}]: {why}"
+    )]
+    OutOfRange {
+        /// Name of the parameter, as in the constructor.
+        name: &'static str,
+        /// The offending value.
+        value: f64,
+        /// Smallest accepted value.
+        min: f64,
+        /// Largest accepted value.
+        max: f64,
+        /// Why the range is what it is.
+        why: &'static str,
+    },
+    /// Two walls of a table built from walls cross or touch away from a
+    /// shared end (a self-intersecting loop, a hole crossing the outer loop
+    /// or another hole).
+    #[error(
+        "wall {second_index} of loop {second_loop} meets wall {first_index} of loop {first_loop} at ({x}, {y}): walls may only meet at the shared end of consecutive walls"
+    )]
+    Crossing {
+        /// Loop of the first wall (0 = outer, 1.. = holes).
+        first_loop: usize,
+        /// Index of the first wall within its loop.
+        first_index: usize,
+        /// Loop of the second wall.
+        second_loop: usize,
+        /// Index of the second wall within its loop.
+        second_index: usize,
+        /// A point where they meet, x.
+        x: f64,
+        /// A point where they meet, y.
+        y: f64,
+    },
+    /// Two walls run along each other for a stretch: a zero-width spike or
+    /// slit (a wall that turns back on itself), or two loops sharing a wall.
+    #[error(
+        "wall {second_index} of loop {second_loop} runs along wall {first_index} of loop {first_loop} (a zero-width spike or slit): the table would have no width there"
+    )]
+    Overlap {
+        /// Loop of the first wall.
+        first_loop: usize,
+        /// Index of the first wall within its loop.
+        first_index: usize,
+        /// Loop of the second wall.
+        second_loop: usize,
+        /// Index of the second wall within its loop.
+        second_index: usize,
+    },
+    /// A hole lies outside the outer loop, or inside another hole.
+    #[error(
+        "hole {hole} (loop {hole}) lies {where_}: every hole must lie inside the outer loop and outside every other hole"
+    )]
+    MisplacedHole {
+        /// Loop index of the hole (1 = first hole).
+        hole: usize,
+        /// `outside the outer loop` or `inside hole k`.
+        where_: String,
+    },
     /// A wall has (numerically) zero length.
     #[error("wall {index} is degenerate (zero length)")]
     DegenerateWall {
@@ -83,6 +146,71 @@ pub enum GeometryError {
         /// Signed area enclosed by the loop (positive = counter-clockwise).
         area: f64,
     },
+}
+
+/// Smallest length a table accepts: lengths and speeds (at least
+/// `spinball_core`'s `MIN_SPEED = 1e-60`) multiply into squares of order
+/// `1e-240`, far above the subnormal range (`2.2e-308`).
+pub const MIN_LENGTH: f64 = 1e-60;
+/// Largest length (and coordinate) a table accepts: squares of lengths times
+/// speeds (at most `1e60`) stay below `1e245`, far below overflow (`1.8e308`).
+pub const MAX_LENGTH: f64 = 1e60;
+/// Largest flat half-length of a [`Stadium`](crate::Stadium): its caps have
+/// radius 1, and coordinates of size `a` resolve them only to `ε a`
+/// (`2.2e-8` of the radius at `a = 1e8`).
+pub const MAX_STADIUM_A: f64 = 1e8;
+/// Smallest `r / l` of a [`Sinai`](crate::Sinai) table: below it the
+/// obstacle's `r²` drowns in the rounding of `|x|² ~ l²` and the ball flies
+/// through it.
+pub const MIN_SINAI_RATIO: f64 = 1e-6;
+/// Smallest channel `(l − r) / l` of a [`Sinai`](crate::Sinai) table: the
+/// four corners must stay wider than the walls' tolerance (`64 ε l`).
+pub const MIN_SINAI_GAP: f64 = 1e-12;
+
+const LENGTH_WHY: &str =
+    "squares of lengths times squares of speeds (1e-60..=1e60) must stay normal, finite f64";
+
+/// Reject NaN, infinities, zero, negative values and lengths outside
+/// `[MIN_LENGTH, MAX_LENGTH]`.
+pub(crate) fn length(name: &'static str, value: f64) -> Result<f64, GeometryError> {
+    let value = positive(name, value)?;
+    within(name, value, MIN_LENGTH, MAX_LENGTH, LENGTH_WHY)
+}
+
+/// Reject a coordinate with `|value| > MAX_LENGTH`.
+pub(crate) fn coordinate(name: &'static str, value: f64) -> Result<f64, GeometryError> {
+    let value = finite(name, value)?;
+    if value.abs() > MAX_LENGTH {
+        return Err(GeometryError::OutOfRange {
+            name,
+            value,
+            min: -MAX_LENGTH,
+            max: MAX_LENGTH,
+            why: LENGTH_WHY,
+        });
+    }
+    Ok(value)
+}
+
+/// Reject `value` outside `[min, max]`, saying `why`.
+pub(crate) fn within(
+    name: &'static str,
+    value: f64,
+    min: f64,
+    max: f64,
+    why: &'static str,
+) -> Result<f64, GeometryError> {
+    if (min..=max).contains(&value) {
+        Ok(value)
+    } else {
+        Err(GeometryError::OutOfRange {
+            name,
+            value,
+            min,
+            max,
+            why,
+        })
+    }
 }
 
 /// Reject NaN and infinities.

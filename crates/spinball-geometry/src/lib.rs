@@ -46,6 +46,7 @@ pub mod circle;
 pub mod error;
 pub mod hit;
 pub mod line;
+mod loop_check;
 pub mod rectangle;
 pub mod segment;
 pub mod segment_table;

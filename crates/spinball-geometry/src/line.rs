@@ -6,7 +6,7 @@
 
 use glam::DVec2;
 
-use crate::error::{GeometryError, finite};
+use crate::error::{GeometryError, MIN_LENGTH, coordinate};
 
 /// Where a ray meets a single wall, in the wall's own terms.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -49,7 +49,8 @@ impl LineSegment {
     ///
     /// # Errors
     /// [`GeometryError::NonFinite`] for NaN or infinite coordinates,
-    /// [`GeometryError::DegenerateWall`] if `start == end`.
+    /// [`GeometryError::OutOfRange`] for a coordinate beyond `±1e60`,
+    /// [`GeometryError::DegenerateWall`] if the wall is shorter than `1e-60`.
     pub fn new(start: DVec2, end: DVec2) -> Result<Self, GeometryError> {
         for (name, v) in [
             ("start.x", start.x),
@@ -57,11 +58,11 @@ impl LineSegment {
             ("end.x", end.x),
             ("end.y", end.y),
         ] {
-            finite(name, v)?;
+            coordinate(name, v)?;
         }
         let delta = end - start;
         let length = delta.length();
-        if !(length > 0.0) || !length.is_finite() {
+        if !(length >= MIN_LENGTH) || !length.is_finite() {
             return Err(GeometryError::DegenerateWall { index: 0 });
         }
         let dir = delta / length;

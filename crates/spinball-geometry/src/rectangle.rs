@@ -5,7 +5,7 @@ use glam::DVec2;
 
 use crate::aabb::Aabb;
 use crate::boundary::Boundary;
-use crate::error::{GeometryError, positive};
+use crate::error::{GeometryError, length};
 use crate::hit::{Hit, WallId};
 use crate::shape::Shape;
 
@@ -26,22 +26,23 @@ use crate::shape::Shape;
 pub struct Rectangle {
     l: f64,
     h: f64,
-    slack: f64,
 }
+
+/// Relative tolerance of [`Rectangle::contains`] on each axis: the walls'
+/// rounding, `64 ε` of the half-side on that axis (the thin side sets its own
+/// tolerance).
+const CONTAINS_SLACK: f64 = 64.0 * f64::EPSILON;
 
 impl Rectangle {
     /// The rectangle of half-width `l` and half-height `h`.
     ///
     /// # Errors
-    /// [`GeometryError::NonFinite`] or [`GeometryError::NonPositive`].
+    /// [`GeometryError::NonFinite`], [`GeometryError::NonPositive`], or
+    /// [`GeometryError::OutOfRange`] for a side outside `[1e-60, 1e60]`.
     pub fn new(l: f64, h: f64) -> Result<Self, GeometryError> {
-        let l = positive("l", l)?;
-        let h = positive("h", h)?;
-        Ok(Rectangle {
-            l,
-            h,
-            slack: 64.0 * f64::EPSILON * l.max(h),
-        })
+        let l = length("l", l)?;
+        let h = length("h", h)?;
+        Ok(Rectangle { l, h })
     }
 
     /// The unit square `[-1, 1]²` used for the paper's Lyapunov runs.
@@ -163,7 +164,7 @@ impl Boundary for Rectangle {
     }
 
     fn contains(&self, p: DVec2) -> bool {
-        p.x.abs() <= self.l + self.slack && p.y.abs() <= self.h + self.slack
+        p.x.abs() <= self.l * (1.0 + CONTAINS_SLACK) && p.y.abs() <= self.h * (1.0 + CONTAINS_SLACK)
     }
 
     fn aabb(&self) -> Aabb {
@@ -172,6 +173,10 @@ impl Boundary for Rectangle {
 
     fn perimeter(&self) -> f64 {
         4.0 * (self.l + self.h)
+    }
+    /// `min(l, h)`: the thin side (1 for the paper's squares and 1.5 × 1 box).
+    fn unit_length(&self) -> f64 {
+        self.l.min(self.h)
     }
     fn area(&self) -> f64 {
         4.0 * self.l * self.h

@@ -40,6 +40,7 @@ use crate::boundary::Boundary;
 use crate::error::GeometryError;
 use crate::hit::{Hit, WallId};
 use crate::line::{LineSegment, WallHit};
+use crate::loop_check::check_loops;
 use crate::segment::Segment;
 use crate::shape::Shape;
 
@@ -98,7 +99,12 @@ impl SegmentTable {
     /// wall), [`GeometryError::OpenLoop`] if a wall does not end where the next
     /// begins (within `1e-9` of the table size), [`GeometryError::WrongOrientation`]
     /// for an outer loop that is not counter-clockwise or a hole that is not
-    /// clockwise.
+    /// clockwise, [`GeometryError::Crossing`] for walls that cross or touch
+    /// away from the shared end of consecutive walls (a self-intersecting
+    /// loop, a hole crossing the outer loop or another hole),
+    /// [`GeometryError::Overlap`] for walls running along each other (a
+    /// zero-width spike or slit), [`GeometryError::MisplacedHole`] for a hole
+    /// outside the outer loop or inside another hole.
     pub fn with_holes(
         outer: Vec<Segment>,
         holes: Vec<Vec<Segment>>,
@@ -137,6 +143,9 @@ impl SegmentTable {
                     });
                 }
             }
+        }
+        check_loops(&loops, scale)?;
+        for (li, lp) in loops.iter().enumerate() {
             let area2: f64 = lp
                 .iter()
                 .map(|w| w.start().perp_dot(w.end()) + w.bulge2())

@@ -9,7 +9,7 @@ use glam::DVec2;
 use crate::aabb::Aabb;
 use crate::arc::{Root, contact, convex_root};
 use crate::boundary::Boundary;
-use crate::error::{GeometryError, positive};
+use crate::error::{GeometryError, MIN_SINAI_GAP, MIN_SINAI_RATIO, length, within};
 use crate::hit::Hit;
 use crate::rectangle::{box_ahead, land_box};
 use crate::shape::Shape;
@@ -41,13 +41,23 @@ impl Sinai {
     /// # Errors
     /// [`GeometryError::NonFinite`], [`GeometryError::NonPositive`], or
     /// [`GeometryError::ObstacleTooLarge`] if `r >= l` (the disk would touch or
-    /// cut the walls and split the table).
+    /// cut the walls and split the table); [`GeometryError::OutOfRange`] for
+    /// lengths outside `[1e-60, 1e60]` or `r / l` outside `[1e-6, 1 − 1e-12]`
+    /// ([`MIN_SINAI_RATIO`],
+    /// [`MIN_SINAI_GAP`]).
     pub fn new(l: f64, r: f64) -> Result<Self, GeometryError> {
-        let l = positive("l", l)?;
-        let r = positive("r", r)?;
+        let l = length("l", l)?;
+        let r = length("r", r)?;
         if r >= l {
             return Err(GeometryError::ObstacleTooLarge { r, l });
         }
+        within(
+            "r",
+            r,
+            MIN_SINAI_RATIO * l,
+            l * (1.0 - MIN_SINAI_GAP),
+            "r/l must lie in [1e-6, 1 - 1e-12]: a smaller disk drowns in the rounding of |x|^2 ~ l^2, a larger one closes the corners to less than the walls' tolerance",
+        )?;
         Ok(Sinai {
             l,
             r,
@@ -119,6 +129,10 @@ impl Boundary for Sinai {
         Aabb::new(DVec2::splat(-self.l), DVec2::splat(self.l))
     }
 
+    /// `l / 2`: 1 for the paper's table (`l = 2`) whatever `r`.
+    fn unit_length(&self) -> f64 {
+        0.5 * self.l
+    }
     fn perimeter(&self) -> f64 {
         8.0 * self.l + TAU * self.r
     }

@@ -8,7 +8,7 @@ use glam::DVec2;
 use crate::aabb::Aabb;
 use crate::arc::{concave_root, contact};
 use crate::boundary::Boundary;
-use crate::error::{GeometryError, positive};
+use crate::error::{GeometryError, MAX_STADIUM_A, MIN_LENGTH, length, within};
 use crate::hit::Hit;
 use crate::shape::Shape;
 
@@ -38,9 +38,16 @@ impl Stadium {
     ///
     /// # Errors
     /// [`GeometryError::NonFinite`] or [`GeometryError::NonPositive`] (`a = 0`
-    /// is the circle: use [`Circle`](crate::Circle)).
+    /// is the circle: use [`Circle`](crate::Circle)); [`GeometryError::OutOfRange`]
+    /// outside `[1e-60, 1e8]` ([`MAX_STADIUM_A`]).
     pub fn new(a: f64) -> Result<Self, GeometryError> {
-        let a = positive("a", a)?;
+        let a = within(
+            "a",
+            length("a", a)?,
+            MIN_LENGTH,
+            MAX_STADIUM_A,
+            "the caps have radius 1 and coordinates of size a resolve them only to 2.2e-16 a",
+        )?;
         Ok(Stadium {
             a,
             slack: 64.0 * f64::EPSILON * (a + 1.0),
@@ -97,8 +104,11 @@ impl Boundary for Stadium {
     }
 
     fn contains(&self, p: DVec2) -> bool {
-        let dx = (p.x.abs() - self.a).max(0.0);
-        let tol = 1.0 + self.slack;
+        // Along x the coordinates round at ε (a + 1), across (y, the cap
+        // radius 1) at ε: each direction gets its own tolerance, so a long
+        // stadium does not accept points beyond its flat walls.
+        let dx = (p.x.abs() - self.a - self.slack).max(0.0);
+        let tol = 1.0 + 64.0 * f64::EPSILON;
         dx * dx + p.y * p.y <= tol * tol
     }
 
@@ -109,6 +119,10 @@ impl Boundary for Stadium {
         )
     }
 
+    /// 1, the cap radius, whatever `a`.
+    fn unit_length(&self) -> f64 {
+        1.0
+    }
     fn perimeter(&self) -> f64 {
         4.0 * self.a + 2.0 * PI
     }

@@ -141,6 +141,14 @@ impl Boundary for Table {
             Table::Sinai(t) => t.curved_length(),
         }
     }
+    fn unit_length(&self) -> f64 {
+        match self {
+            Table::Circle(t) => t.unit_length(),
+            Table::Rectangle(t) => t.unit_length(),
+            Table::Stadium(t) => t.unit_length(),
+            Table::Sinai(t) => t.unit_length(),
+        }
+    }
     fn shape(&self) -> Option<Shape> {
         match self {
             Table::Circle(t) => t.shape(),

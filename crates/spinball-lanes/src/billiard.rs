@@ -8,7 +8,8 @@
 //! threads, and turns a trajectory that went non-finite into an error naming
 //! its initial condition.
 
-use spinball_core::{Billiard, MAX_QR_INTERVAL, SpinLaw, State, TangentVector};
+use spinball_core::perturbation::check_delta0;
+use spinball_core::{Billiard, MAX_QR_INTERVAL, Perturbation, SpinLaw, State, TangentVector};
 use spinball_geometry::{Boundary, SegmentTable, Shape, Table};
 
 use crate::dispatch::Dispatch;
@@ -176,18 +177,22 @@ impl<B: Boundary> LaneBilliard<B> {
     }
 
     /// The largest Lyapunov exponent by the paper's finite-difference
-    /// Benettin method, `δ0 = delta0`, shadow along `directions[i]` (a unit
-    /// 5-vector, as `spinball_analysis::random_direction` draws).
+    /// Benettin method, `δ0 = delta0` in the units of
+    /// [`Perturbation`] (the table's unit length and each ball's speed, as
+    /// powers of two: exactly `delta0` on the paper's tables), shadow along
+    /// `directions[i]` (a unit 5-vector, as
+    /// `spinball_analysis::random_direction` draws).
     ///
     /// The reference and shadow trajectories are bitwise the scalar ones;
     /// `Σ ln(δ/δ0)` differs from the scalar `largest_lyapunov` by rounding in
     /// the product of the factors only (relative `~1e-13`; see the crate docs).
     ///
     /// # Errors
-    /// [`LanesError::InvalidOption`] for zero collisions, a bad `delta0`,
-    /// mismatched lengths or a zero or non-finite direction;
-    /// [`LanesError::Launch`]; [`LanesError::NonFinite`] (e.g. a shadow
-    /// that lands exactly on the reference).
+    /// [`LanesError::InvalidOption`] for zero collisions, `delta0` outside
+    /// `[1e-11, 1e-3]`, mismatched lengths or a zero or non-finite direction;
+    /// [`LanesError::Launch`]; [`LanesError::Perturbation`] where the
+    /// scalar `Perturbation::new` fails; [`LanesError::NonFinite`] (e.g. a
+    /// shadow that lands exactly on the reference, or a stuck ball).
     pub fn lyapunov_fd(
         &self,
         starts: &[State],
@@ -195,14 +200,40 @@ impl<B: Boundary> LaneBilliard<B> {
         delta0: f64,
         collisions: u64,
     ) -> Result<Vec<Stretch>, LanesError> {
-        if !(delta0.is_finite() && delta0 > 0.0) {
-            return Err(LanesError::invalid(
-                "delta0",
-                format!("must be finite and > 0, got {delta0}"),
-            ));
-        }
+        check_delta0(delta0).map_err(|e| LanesError::invalid("delta0", e.to_string()))?;
         let ins = self.check_lcn(starts, directions, collisions)?;
-        self.runner.finite_difference(&ins, delta0, collisions)
+        let perturbations = starts
+            .iter()
+            .enumerate()
+            .map(|(index, s)| {
+                Perturbation::new(&self.table, s, &self.runner.law, delta0)
+                    .map_err(|source| LanesError::Perturbation { index, source })
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        // Starts with the same units run together (on the samplers' energy
+        // shell that is all of them); outcomes go back in input order.
+        let mut out: Vec<Option<Stretch>> = vec![None; starts.len()];
+        let mut todo: Vec<usize> = (0..starts.len()).collect();
+        while let Some(&first) = todo.first() {
+            let p = perturbations[first];
+            let (group, rest): (Vec<usize>, Vec<usize>) =
+                todo.into_iter().partition(|&i| perturbations[i] == p);
+            let part: Vec<_> = group.iter().map(|&i| ins[i]).collect();
+            let got = self
+                .runner
+                .finite_difference(&part, &p, collisions)
+                .map_err(|e| match e {
+                    LanesError::NonFinite { index } => LanesError::NonFinite {
+                        index: group[index],
+                    },
+                    other => other,
+                })?;
+            for (&i, s) in group.iter().zip(got) {
+                out[i] = Some(s);
+            }
+            todo = rest;
+        }
+        Ok(out.into_iter().flatten().collect())
     }
 
     /// The largest Lyapunov exponent by exact tangent dynamics, starting from
@@ -299,10 +330,16 @@ impl Runner {
     fn finite_difference(
         &self,
         ins: &[(State, TangentVector)],
-        delta0: f64,
+        p: &Perturbation,
         collisions: u64,
     ) -> Result<Vec<Stretch>, LanesError> {
-        self.run(&kernels::FiniteDifference { collisions, delta0 }, ins)
+        let k = kernels::FiniteDifference {
+            collisions,
+            delta0: p.delta0(),
+            scaled: p.scaled(),
+            inv_units: p.inv_units(),
+        };
+        self.run(&k, ins)
     }
 
     fn tangent(

@@ -9,10 +9,10 @@
 //! road than the scalar code: no logarithm and no square root in the loop.
 //! Its rounding does not feed back into the trajectory.
 
-use spinball_core::SpinLaw;
+use spinball_core::{MAX_ZERO_TIME_RUN, SpinLaw};
 
 use crate::geom::{Geom, LaneHit};
-use crate::lanes::{BitsOps, Lanes};
+use crate::lanes::{BitsOps, Lanes, MaskOps};
 
 /// The spin law's coefficients, as the kernels use them.
 #[derive(Clone, Copy, Debug)]
@@ -290,6 +290,43 @@ pub(crate) fn pow2_renormalise<L: Lanes>(z: &mut [L; 5]) -> L::Bits {
         *c = *c * scale;
     }
     e
+}
+
+/// Runs of zero-time collisions, as `Billiard::step` counts them: a lane
+/// whose run exceeds [`MAX_ZERO_TIME_RUN`] is stuck (a ball moving along a
+/// wall into a tangent curved wall). Its outcome is made non-finite, and the
+/// caller's rerun on the scalar path gives `StepError::Stuck`.
+#[derive(Clone, Copy)]
+pub(crate) struct ZeroRun<L: Lanes> {
+    run: L,
+    stuck: L::Mask,
+}
+
+impl<L: Lanes> ZeroRun<L> {
+    #[inline(always)]
+    pub fn new() -> Self {
+        let zero = L::splat(0.0);
+        ZeroRun {
+            run: zero,
+            stuck: zero.ne(zero),
+        }
+    }
+
+    /// Count a collision that took `time`.
+    #[inline(always)]
+    pub fn watch(&mut self, time: L) {
+        let zero = L::splat(0.0);
+        self.run = L::select(time.eq(zero), self.run + 1.0, zero);
+        self.stuck = self
+            .stuck
+            .or(self.run.gt(L::splat(f64::from(MAX_ZERO_TIME_RUN))));
+    }
+
+    /// Lanes that never got stuck.
+    #[inline(always)]
+    pub fn moving(&self) -> L::Mask {
+        self.stuck.not()
+    }
 }
 
 #[cfg(test)]

@@ -3,7 +3,7 @@
 //! One error type for the public API. It sits above [`isa`](crate::isa),
 //! whose own [`IsaError`] converts into it.
 
-use spinball_core::LaunchError;
+use spinball_core::{LaunchError, PerturbationError};
 use thiserror::Error;
 
 use crate::isa::{Isa, IsaError};
@@ -31,6 +31,15 @@ pub enum LanesError {
         /// The launch error.
         source: LaunchError,
     },
+    /// The finite-difference perturbation cannot measure anything for this
+    /// initial condition (as `spinball_core::Perturbation::new`).
+    #[error("initial condition {index}: {source}")]
+    Perturbation {
+        /// Position of the initial condition in the input slice.
+        index: usize,
+        /// Why.
+        source: PerturbationError,
+    },
     /// The table has no lane form ([`Boundary::shape`] is `None`): run it on
     /// the scalar path.
     ///
@@ -40,7 +49,9 @@ pub enum LanesError {
     )]
     NoLaneForm,
     /// A trajectory (or its shadow or tangent vectors) became non-finite: no
-    /// wall ahead, a shadow separation of zero, or a vector that collapsed.
+    /// wall ahead, a shadow separation of zero, a vector that collapsed, or
+    /// the ball got stuck (more than `spinball_core::MAX_ZERO_TIME_RUN`
+    /// zero-time collisions in a row).
     /// Where the scalar path fails it fails too; run that initial condition
     /// through the scalar path for the exact step and reason.
     #[error(

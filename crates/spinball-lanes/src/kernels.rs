@@ -16,7 +16,9 @@
 
 use spinball_core::{State, TangentVector};
 
-use crate::dynamics::{Balls, Law, LogProduct, Shell, TangentStep, pow2_renormalise, step};
+use crate::dynamics::{
+    Balls, Law, LogProduct, Shell, TangentStep, ZeroRun, pow2_renormalise, step,
+};
 use crate::geom::Geom;
 use crate::isa::ProvenBy;
 use crate::lanes::{BitsOps, Groups, Lanes, MAX_LANES, MaskOps, PerIsa};
@@ -138,9 +140,14 @@ impl Kernel for Plain {
         let mut b = Balls::<L>::new(load_states(|i| ins[i]));
         let shell = Shell::Fixed(b.inv_shell(law));
         let mut time = L::splat(0.0);
+        let mut zero_run = ZeroRun::<L>::new();
         for _ in 0..self.collisions {
-            time = time + step(g, law, &mut b, shell).hit.time;
+            let t = step(g, law, &mut b, shell).hit.time;
+            zero_run.watch(t);
+            time = time + t;
         }
+        // A stuck lane reports a NaN time (rerun it on the scalar path).
+        let time = L::select(zero_run.moving(), time, L::splat(f64::NAN));
         let z = b.coords();
         out.extend((0..L::N).map(|i| Flight {
             end: state_of(&z, i),
@@ -162,6 +169,10 @@ impl Kernel for Plain {
 pub(crate) struct FiniteDifference {
     pub collisions: u64,
     pub delta0: f64,
+    /// `δ0` times each coordinate's unit (`spinball_core::Perturbation`).
+    pub scaled: [f64; 5],
+    /// `1 / unit` of each coordinate (powers of two).
+    pub inv_units: [f64; 5],
 }
 
 impl Kernel for FiniteDifference {
@@ -184,22 +195,30 @@ impl Kernel for FiniteDifference {
         let d0 = load_vectors::<L>(|i| ins[i].1);
         let mut r = Balls::new(z0);
         let shell = Shell::Fixed(r.inv_shell(law));
-        let mut s = Balls::new(five(|c| z0[c] + d0[c] * delta0));
+        let (scaled, inv_units) = (self.scaled, self.inv_units);
+        let mut s = Balls::new(five(|c| z0[c] + d0[c] * scaled[c]));
         let mut logs = LogProduct::new();
         let mut time = L::splat(0.0);
+        let mut zero_run = ZeroRun::<L>::new();
         for _ in 0..self.collisions {
-            time = time + step(g, law, &mut r, shell).hit.time;
+            let t = step(g, law, &mut r, shell).hit.time;
+            zero_run.watch(t);
+            time = time + t;
             step(g, law, &mut s, Shell::Own);
             let zr = r.coords();
             let zs = s.coords();
             let d: [L; 5] = five(|c| zs[c] - zr[c]);
-            let dist = dot(&d, &d).sqrt();
+            // The separation in units (the scalar's `Perturbation::distance`).
+            let w: [L; 5] = five(|c| d[c] * inv_units[c]);
+            let dist = dot(&w, &w).sqrt();
             // Σ ln(δ/δ0), one `ln` at the end; the scalar divides by δ0.
             logs.push(dist * inv_delta0);
             let k = L::splat(delta0) / dist;
             s = Balls::new(five(|c| zr[c] + d[c] * k));
         }
-        let ok = all_finite(&s.coords()).and(time.is_finite());
+        let ok = all_finite(&s.coords())
+            .and(time.is_finite())
+            .and(zero_run.moving());
         let z = r.coords();
         out.extend((0..L::N).map(|i| Stretch {
             log_stretch: if mask_lane::<L>(ok, i) {
@@ -253,11 +272,13 @@ impl Kernel for Tangent {
         let mut time = L::splat(0.0);
         let mut e = L::Bits::splat(0);
         let mut renorms = 0u64;
+        let mut zero_run = ZeroRun::<L>::new();
         let mut left = self.collisions;
         while left > 0 {
             let run = left.min(RENORM_EVERY);
             for _ in 0..run {
                 let st = step(g, law, &mut r, shell);
+                zero_run.watch(st.hit.time);
                 time = time + st.hit.time;
                 TangentStep::new::<G>(law, &st, &r).apply::<G>(law, &mut v);
             }
@@ -265,7 +286,7 @@ impl Kernel for Tangent {
             renorms += 1;
             left -= run;
         }
-        let ok = all_finite(&v).and(time.is_finite());
+        let ok = all_finite(&v).and(time.is_finite()).and(zero_run.moving());
         let norm = dot(&v, &v).sqrt();
         let z = r.coords();
         out.extend((0..L::N).map(|i| {
@@ -316,11 +337,13 @@ impl Kernel for Spectrum {
         let mut v: [[L; 5]; 5] = five(|j| load_vectors(|i| ins[i].1[j]));
         let mut logs = [LogProduct::<L>::new(); 5];
         let mut time = L::splat(0.0);
+        let mut zero_run = ZeroRun::<L>::new();
         let mut left = self.collisions;
         while left > 0 {
             let run = left.min(self.qr_interval);
             for _ in 0..run {
                 let st = step(g, law, &mut r, shell);
+                zero_run.watch(st.hit.time);
                 time = time + st.hit.time;
                 let ts = TangentStep::new::<G>(law, &st, &r);
                 for z in v.iter_mut() {
@@ -345,7 +368,11 @@ impl Kernel for Spectrum {
             }
             left -= run;
         }
-        let ok = v.iter().fold(time.is_finite(), |m, z| m.and(all_finite(z)));
+        let ok = v
+            .iter()
+            .fold(time.is_finite().and(zero_run.moving()), |m, z| {
+                m.and(all_finite(z))
+            });
         let z = r.coords();
         out.extend((0..L::N).map(|i| SpectrumStretch {
             log_stretch: std::array::from_fn(|j| {
@@ -410,6 +437,8 @@ mod tests {
         let fd = FiniteDifference {
             collisions: 500,
             delta0: 1e-7,
+            scaled: [1e-7; 5],
+            inv_units: [1.0; 5],
         };
         assert_eq!(
             run_chunks::<_, _, Wide<f64, 4>, _>(Baseline, &g, &l, &fd, &ins),
@@ -522,6 +551,8 @@ mod tests {
         let fd = FiniteDifference {
             collisions: N,
             delta0: 1e-7,
+            scaled: [1e-7; 5],
+            inv_units: [1.0; 5],
         };
         run_chunks::<_, _, Counted, _>(Baseline, g, l, &fd, &[(s, d)]);
         let fd = report("fd");

@@ -75,11 +75,30 @@ impl Job {
         template: Ensemble,
         alphas: &[f64],
     ) -> Result<Job, AnalysisError> {
-        Ok(Job {
+        let sweep = plan.sweep(template, alphas)?;
+        Ok(Job::of(label, plan, sweep))
+    }
+
+    fn of(label: impl Into<String>, plan: &Plan, sweep: AlphaSweep) -> Job {
+        Job {
             label: label.into(),
             plan: *plan,
-            sweep: plan.sweep(template, alphas)?,
-        })
+            sweep,
+        }
+    }
+
+    /// As [`new`](Self::new) over any `α >= 0`, including α > 1.
+    ///
+    /// # Errors
+    /// As [`Plan::sweep_extended`].
+    pub fn extended(
+        label: impl Into<String>,
+        plan: &Plan,
+        template: Ensemble,
+        alphas: &[f64],
+    ) -> Result<Job, AnalysisError> {
+        let sweep = plan.sweep_extended(template, alphas)?;
+        Ok(Job::of(label, plan, sweep))
     }
 }
 

@@ -75,6 +75,23 @@ impl Plan {
     ) -> Result<AlphaSweep<B>, AnalysisError> {
         Ok(AlphaSweep::new(self.apply(template), alphas)?.with_stop(self.stop))
     }
+
+    /// As [`sweep`](Self::sweep) over any `α >= 0`, including the
+    /// extension α > 1 ([`SpinLaw::extended`](spinball_core::SpinLaw::extended)).
+    ///
+    /// # Errors
+    /// [`AnalysisError::SpinLaw`] for a negative or non-finite α.
+    pub fn sweep_extended<B: Boundary + Clone + Sync>(
+        &self,
+        template: Ensemble<B>,
+        alphas: &[f64],
+    ) -> Result<AlphaSweep<B>, AnalysisError> {
+        let laws = alphas
+            .iter()
+            .map(|&a| spinball_core::SpinLaw::extended(a))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(AlphaSweep::from_laws(self.apply(template), laws).with_stop(self.stop))
+    }
 }
 
 impl fmt::Display for Plan {

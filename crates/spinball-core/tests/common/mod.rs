@@ -58,3 +58,15 @@ pub fn collisions<B: Boundary>(
 pub fn finite(s: &State) -> bool {
     s.to_array().iter().all(|x| x.is_finite())
 }
+
+/// Closest approach to the origin (the Sinai disk's centre) of the straight
+/// flight from `a` to `b`.
+pub fn closest_to_origin(a: DVec2, b: DVec2) -> f64 {
+    let ab = b - a;
+    let f = if ab.length_squared() > 0.0 {
+        (-a.dot(ab) / ab.length_squared()).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (a + ab * f).length()
+}
