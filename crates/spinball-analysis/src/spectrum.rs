@@ -31,7 +31,7 @@
 //! leave `[1e-150, 1e150]`.
 
 use rand::Rng;
-use spinball_core::{Ball, Billiard, State, TangentVector};
+use spinball_core::{Ball, Billiard, Perturbation, State, TangentVector};
 use spinball_geometry::Boundary;
 
 use crate::error::AnalysisError;
@@ -355,10 +355,15 @@ pub fn lyapunov_spectrum<B: Boundary, R: Rng + ?Sized>(
         }
         Method::FiniteDifference { delta0 } => {
             let law = *billiard.law();
+            // Separations live in the table's and the ball's units (exactly
+            // 1 on the paper's tables, so their numbers are unchanged).
+            let units = Perturbation::new(billiard.table(), &start, &law, delta0)
+                .map_err(|source| AnalysisError::Perturbation { index: 0, source })?;
+            let (scaled, inv_units) = (units.scaled(), units.inv_units());
             let offset = |z: &[f64; 5], d: &TangentVector| -> Result<Ball, AnalysisError> {
                 let dz = d.to_array();
                 Ok(Ball::new(
-                    State::from_array(std::array::from_fn(|i| z[i] + delta0 * dz[i])),
+                    State::from_array(std::array::from_fn(|i| z[i] + dz[i] * scaled[i])),
                     &law,
                 )?)
             };
@@ -377,7 +382,9 @@ pub fn lyapunov_spectrum<B: Boundary, R: Rng + ?Sized>(
                 for (s, d) in shadows.iter_mut().zip(frame.iter_mut()) {
                     billiard.step(s)?;
                     let zs = s.state().to_array();
-                    *d = TangentVector::from_array(std::array::from_fn(|i| zs[i] - z[i]));
+                    *d = TangentVector::from_array(std::array::from_fn(|i| {
+                        (zs[i] - z[i]) * inv_units[i]
+                    }));
                 }
                 let (r, below) = gram_schmidt_floored(&mut frame, floor)
                     .map_err(|i| collapsed(i, n, "shadow separation"))?;

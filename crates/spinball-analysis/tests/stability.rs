@@ -5,9 +5,12 @@
 //! issue's, literally; every expected number says where it comes from.
 
 use spinball_analysis::{
-    AnalysisError, Engine, Ensemble, LyapunovOptions, Method, largest_lyapunov,
+    AnalysisError, Engine, Ensemble, LyapunovOptions, Method, SpectrumOptions, largest_lyapunov,
+    lyapunov_spectrum,
 };
-use spinball_core::{PerturbationError, Sampler, SpinLaw, State, StepError, TangentVector, ic_rng};
+use spinball_core::{
+    Billiard, PerturbationError, Sampler, SpinLaw, State, StepError, TangentVector, ic_rng,
+};
 use spinball_geometry::{Boundary, Circle, DVec2, Rectangle, Stadium, Table};
 use spinball_lanes::{LaneBilliard, LanesError};
 
@@ -226,6 +229,33 @@ fn f5_scaled_tables_give_the_scaled_exponent() {
             "{method:?}: λR = {} vs {}",
             odd.mean * 1e8,
             unit.mean
+        );
+    }
+}
+
+#[test]
+fn f5_finite_difference_spectra_scale_with_the_table() {
+    // The finite-difference spectrum measures its shadows in the same units
+    // as λ: on the unit circle scaled by 2^27 every exponent is the unit
+    // circle's divided by 2^27, bitwise (with an absolute δ0 the five
+    // shadows sat below the rounding of coordinates of size 1e8).
+    let law = SpinLaw::new(0.5).unwrap();
+    let r = 2f64.powi(27);
+    let start = State::new(DVec2::new(0.3, -0.2), DVec2::new(0.6, 0.8), 0.1);
+    let scaled = State::new(start.position * r, start.velocity, start.spin);
+    let options = SpectrumOptions::new(2_000, fd(1e-7));
+    let spectrum = |radius: f64, s: State| {
+        let billiard = Billiard::new(Circle::new(radius).unwrap(), law);
+        lyapunov_spectrum(&billiard, s, &options, &mut ic_rng(5, 0)).unwrap()
+    };
+    let (unit, big) = (spectrum(1.0, start), spectrum(r, scaled));
+    for k in 0..5 {
+        assert_eq!(
+            (big.exponents[k] * r).to_bits(),
+            unit.exponents[k].to_bits(),
+            "exponent {k}: {} vs {}",
+            big.exponents[k] * r,
+            unit.exponents[k]
         );
     }
 }
