@@ -103,11 +103,11 @@ run=(--alpha 0,0.5 --ics 14 --collisions 600 --method tangent --seed 5)
 "$SPINBALL" slurm --table stadium:a=1 --and-table docs/tables/mushroom.toml "${run[@]}" \
   --shards 3 --time 5 --cpus-per-task 1 --dir "$campaign" --spinball "$SPINBALL"
 cd "$campaign"
-start=$(date +%s.%N)
+start=$SECONDS
 array=$(sbatch --parsable --wait array.sbatch) || { say "the array failed"; tail -n 20 logs/*; exit 1; }
 sbatch --parsable --wait --dependency=afterok:"${array%%;*}" merge.sbatch >/dev/null ||
   { say "the merge job failed"; tail -n 20 logs/*; exit 1; }
-say "array job $array and its merge job finished in $(echo "$(date +%s.%N) - $start" | bc) s"
+say "array job $array and its merge job finished in $((SECONDS - start)) s"
 
 # The same runs in one process each, compared with the merged results.
 cd "$root"
