@@ -137,6 +137,12 @@ fn event_dict<'py>(py: Python<'py>, event: &RunEvent<'_>) -> PyResult<Bound<'py,
 
 impl RunObserver for Watch {
     fn observe(&mut self, event: &RunEvent<'_>) -> Control {
+        // A batch's trajectories are for checkpoint writers; callbacks see
+        // started, batch and finished (signals are checked at the batch
+        // event that follows).
+        if matches!(event, RunEvent::Trajectories(_)) {
+            return Control::Continue;
+        }
         self.report(|py| event_dict(py, event))
     }
 }

@@ -11,6 +11,8 @@ class TextProgress:
 
     def __call__(self, event):
         kind = event.get("event")
+        if kind not in ("started", "batch", "finished"):
+            return
         where = f"[α = {event['alpha']:g}, point {event['point'] + 1}/{event['points']}]"
         if kind == "batch":
             line = f"{where} {event['ics_done']}/{event['ics_max']} ICs"
