@@ -92,6 +92,13 @@ mod test_support;
 pub mod trajectory;
 pub mod wall_statistics;
 
+// Phase space: sections, FTLE maps, the bouncing-ball island, return times.
+pub mod bouncing_ball;
+pub mod ftle_map;
+pub mod invariant_measure;
+pub mod return_time;
+pub mod section;
+
 pub use alpha_sweep::{AlphaSweep, SweepEvent, linspace};
 pub use collision_log::{COLLISION_COLUMNS, CollisionLog, collision_log};
 pub use collision_rate::{
@@ -143,3 +150,11 @@ pub use trajectory::{TrajectoryStats, ftle_trajectories, trajectories_csv, traje
 pub use wall_statistics::{
     DeltaQPopulation, TransitionRule, WallStatistics, wall_statistics, wall_statistics_ensemble,
 };
+
+pub use bouncing_ball::{FacingFlats, FlatBand, pair_rotation};
+pub use ftle_map::{FtleMap, FtleMapOptions, Slice, ftle_map};
+pub use invariant_measure::{InvariantMeasure, SectionBox};
+pub use return_time::{
+    KacComparison, OrbitReturns, invariant_start, kac_comparison, orbit_returns,
+};
+pub use section::{Section, SectionPoint, section_points, sections, state_on_section};
