@@ -46,8 +46,10 @@
 
 use std::f64::consts::PI;
 
-use spinball_core::{SpinLaw, State};
+use spinball_core::{Sampler, SpinLaw, State};
 use spinball_geometry::{DVec2, Stadium};
+
+use crate::trajectory::TrajectoryStats;
 
 /// The rotation of `(v_x, √α u)` by a bottom–top pair of collisions on two
 /// facing flat walls: `4·arctan √α` (see the [module docs](self)).
@@ -174,6 +176,66 @@ impl FacingFlats {
         let velocity = DVec2::new(t * v_par, -y * rest.sqrt());
         self.trapped(law, &State::new(DVec2::new(x, y), velocity, spin))
     }
+}
+
+/// How many of an ensemble's regular orbits the rotation explains.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct BouncingShare {
+    /// FTLE at or below which an orbit counts as regular.
+    pub threshold: f64,
+    /// Regular orbits.
+    pub regular: u64,
+    /// Regular orbits whose start the rotation predicts trapped.
+    pub regular_trapped: u64,
+    /// Chaotic orbits whose start the rotation predicts trapped (0 if the
+    /// prediction is right and the run long enough).
+    pub chaotic_trapped: u64,
+    /// Orbits.
+    pub total: u64,
+}
+
+impl BouncingShare {
+    /// Share of the regular orbits that are predicted bouncing balls
+    /// (`None` without regular orbits).
+    #[must_use]
+    pub fn share(&self) -> Option<f64> {
+        (self.regular > 0).then(|| self.regular_trapped as f64 / self.regular as f64)
+    }
+}
+
+/// Which of an ensemble's orbits (`trajectories`, started by `sampler` from
+/// `ic_rng(seed, index)` on `stadium` under `law`, as
+/// [`Ensemble`](crate::Ensemble) draws them) are regular, and which of
+/// those the rotation predicts trapped between the flats.
+#[must_use]
+pub fn bouncing_share(
+    stadium: &Stadium,
+    law: &SpinLaw,
+    sampler: Sampler,
+    seed: u64,
+    trajectories: &[TrajectoryStats],
+    threshold: f64,
+) -> BouncingShare {
+    let flats = FacingFlats::of(stadium);
+    let mut share = BouncingShare {
+        threshold,
+        regular: 0,
+        regular_trapped: 0,
+        chaotic_trapped: 0,
+        total: trajectories.len() as u64,
+    };
+    for t in trajectories {
+        let start = sampler.initial_state(stadium, law, seed, t.index);
+        let trapped = u64::from(flats.trapped(law, &start));
+        if t.exponent <= threshold {
+            share.regular += 1;
+            share.regular_trapped += trapped;
+        } else {
+            share.chaotic_trapped += trapped;
+        }
+    }
+    share
 }
 
 #[cfg(test)]

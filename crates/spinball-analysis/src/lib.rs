@@ -151,7 +151,7 @@ pub use wall_statistics::{
     DeltaQPopulation, TransitionRule, WallStatistics, wall_statistics, wall_statistics_ensemble,
 };
 
-pub use bouncing_ball::{FacingFlats, FlatBand, pair_rotation};
+pub use bouncing_ball::{BouncingShare, FacingFlats, FlatBand, bouncing_share, pair_rotation};
 pub use ftle_map::{FtleMap, FtleMapOptions, Slice, ftle_map};
 pub use invariant_measure::{InvariantMeasure, SectionBox};
 pub use return_time::{

@@ -129,7 +129,7 @@ impl Plot for MapPlot {
             && (c.columns == 0 || c.rows == 0 || c.values.len() != c.columns * c.rows)
         {
             return Err(PlotError::LengthMismatch {
-                what: "map cells",
+                what: "map cells".into(),
                 expected: c.columns * c.rows,
                 got: c.values.len(),
             });
@@ -138,7 +138,7 @@ impl Plot for MapPlot {
             && mask.len() != cells
         {
             return Err(PlotError::LengthMismatch {
-                what: "outline mask",
+                what: "outline mask".into(),
                 expected: cells,
                 got: mask.len(),
             });
@@ -147,7 +147,10 @@ impl Plot for MapPlot {
             .cells
             .as_ref()
             .is_some_and(|c| c.values.iter().flatten().any(|v| v.is_finite()))
-            || self.points.iter().any(|p| p.0.is_finite() && p.1.is_finite());
+            || self
+                .points
+                .iter()
+                .any(|p| p.0.is_finite() && p.1.is_finite());
         if !drawn {
             return Err(PlotError::EmptyData("map (no finite cell or point)".into()));
         }
@@ -307,7 +310,11 @@ impl Plot for Scatter3d {
             increasing(name, self.ranges[k])?;
         }
         increasing("value range", self.value_range)?;
-        if !self.points.iter().any(|(p, _)| p.iter().all(|c| c.is_finite())) {
+        if !self
+            .points
+            .iter()
+            .any(|(p, _)| p.iter().all(|c| c.is_finite()))
+        {
             return Err(PlotError::EmptyData("3-D scatter (no finite point)".into()));
         }
         Ok(())
@@ -367,7 +374,11 @@ impl Plot for Scatter3d {
                 format_tick(a),
                 format_tick(b)
             );
-            chart.draw_series(std::iter::once(Text::new(text, (x, y - 0.06), font.clone())))?;
+            chart.draw_series(std::iter::once(Text::new(
+                text,
+                (x, y - 0.06),
+                font.clone(),
+            )))?;
         }
         Ok(())
     }
