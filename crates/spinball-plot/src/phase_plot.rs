@@ -329,7 +329,7 @@ impl Plot for Scatter3d {
         font::ensure()?;
         let area = titled(area, self.title.as_deref(), style.title_px)?;
         inner_size(&area, style.margin, 0, 0)?;
-        let r = 0.9;
+        let r = 1.1;
         let mut chart = ChartBuilder::on(&area)
             .margin(style.margin)
             .build_cartesian_2d(-r..r, -r..r)?;
@@ -360,25 +360,22 @@ impl Plot for Scatter3d {
                     Circle::new(self.project(self.unit(p)), radius, colour.filled())
                 }),
         )?;
-        // Axis names at the middle of three edges from the origin corner,
-        // with the range ends.
+        // Axis names beside the middle of three edges from the origin
+        // corner (pushed away from the cube), with the range ends.
         let font = (font::FAMILY, style.tick_px).into_font().color(&BLACK);
+        let centre = self.project([0.5; 3]);
         for k in 0..3 {
-            let mut mid = [0.0; 3];
+            // x and y on the front edges from the origin corner, z on the
+            // left vertical edge (the front one runs through the cloud).
+            let mut mid = if k == 2 { [0.0, 1.0, 0.0] } else { [0.0; 3] };
             mid[k] = 0.5;
             let (x, y) = self.project(mid);
+            let (dx, dy) = (x - centre.0, y - centre.1);
+            let norm = dx.hypot(dy).max(1e-9);
+            let at = (x + 0.12 * dx / norm - 0.15, y + 0.08 * dy / norm);
             let (a, b) = self.ranges[k];
-            let text = format!(
-                "{} [{}, {}]",
-                self.labels[k],
-                format_tick(a),
-                format_tick(b)
-            );
-            chart.draw_series(std::iter::once(Text::new(
-                text,
-                (x, y - 0.06),
-                font.clone(),
-            )))?;
+            let text = format!("{} [{:.3}, {:.3}]", self.labels[k], a, b);
+            chart.draw_series(std::iter::once(Text::new(text, at, font.clone())))?;
         }
         Ok(())
     }
