@@ -68,13 +68,17 @@ pub mod energy;
 pub mod engine;
 pub mod ensemble;
 pub mod error;
+pub mod error_budget;
+pub mod finite_time_bias;
 pub mod ftle;
 pub mod islands;
 pub mod lyapunov;
 pub mod measurement;
+pub mod method_bias;
 pub mod paper;
 pub mod parallel;
 pub mod partial;
+pub mod planner;
 pub mod provenance;
 pub mod q_pairs;
 pub mod result;
@@ -91,6 +95,7 @@ pub mod stop_rule;
 mod test_support;
 pub mod trajectory;
 pub mod wall_statistics;
+pub mod work_precision;
 
 pub use alpha_sweep::{AlphaSweep, SweepEvent, linspace};
 pub use collision_log::{COLLISION_COLUMNS, CollisionLog, collision_log};
@@ -110,6 +115,8 @@ pub use energy::{
 pub use engine::Engine;
 pub use ensemble::Ensemble;
 pub use error::AnalysisError;
+pub use error_budget::{ErrorBudget, Reference};
+pub use finite_time_bias::{BiasFit, BiasLaw, BiasRegime, FiniteTimeBias, MIN_CHECKPOINTS};
 pub use ftle::{CHAOS_THRESHOLD, ChaoticBand, ChaoticFraction, FtleDistribution, THRESHOLD_BAND};
 pub use islands::{
     ClassComparison, ClassSummary, MeanSem, TrajectoryProfile, compare_classes, trajectory_profile,
@@ -120,8 +127,10 @@ pub use lyapunov::{
     random_direction,
 };
 pub use measurement::{Measurement, dhf_product, normalised, paired_difference};
+pub use method_bias::MethodBias;
 pub use parallel::{Threads, map_chunks, map_indices};
 pub use partial::{MergeError, PartialRun, merge_partials};
+pub use planner::{MethodPilot, PlannedRun, Planner, VarianceModel};
 pub use provenance::{Provenance, TableRecord};
 pub use q_pairs::{PairClass, QPair, QPairStatistics, q_pair_statistics};
 pub use result::{LyapunovEstimate, StopReason};
@@ -143,3 +152,4 @@ pub use trajectory::{TrajectoryStats, ftle_trajectories, trajectories_csv, traje
 pub use wall_statistics::{
     DeltaQPopulation, TransitionRule, WallStatistics, wall_statistics, wall_statistics_ensemble,
 };
+pub use work_precision::{Budget, WorkPoint, work_precision};

@@ -172,6 +172,7 @@ impl SweepRow {
     pub fn table_line(&self) -> String {
         let stop = match self.stop.as_str() {
             "target_reached" => "target",
+            "total_error_reached" => "total",
             "time_budget" => "budget",
             "range_exhausted" => "cap",
             "completed" => "done",
