@@ -9,11 +9,11 @@
 //! | mode      | reference (tangent, ICs × checkpoints)   | budgets N × T                   |
 //! |-----------|------------------------------------------|---------------------------------|
 //! | `--quick` | 256 × {500, …, 4000}                     | 16 × 500 … 256 × 2000 (seconds) |
-//! | default   | 8000 × {2500, …, 40 000}                 | 64 × 1000 … 16 384 × 20 000     |
+//! | default   | 16 000 × {2500, …, 20 000}               | 64 × 1000 … 16 384 × 20 000     |
 //! | `--paper` | 10⁵ × {10⁴, …, 10⁵}                      | … up to 10⁵ × 10⁵ (the paper's) |
 //!
 //! Scenes: stadium a = 1 and Sinai L = 2, R = 1 at α = 0, 0.5, 1, and the
-//! near-integrable stadium a = 0.1 at α = 0.5 (bias dominates). On the
+//! near-integrable stadium a = 0.05 at α = 0.5 (bias dominates). On the
 //! first scene (stadium, α = 0.5) every method (finite differences at
 //! δ0 = 1e-5, 1e-7, 1e-9, 1e-11 and tangent) runs on both engines; on the
 //! others tangent and δ0 = 1e-7 in lanes. The reference of a scene uses
@@ -43,7 +43,7 @@ const SCENES: [(&str, f64); 7] = [
     ("sinai:L=2,R=1", 0.0),
     ("sinai:L=2,R=1", 0.5),
     ("sinai:L=2,R=1", 1.0),
-    ("stadium:a=0.1", 0.5),
+    ("stadium:a=0.05", 0.5),
 ];
 const DELTAS: [f64; 4] = [1e-5, 1e-7, 1e-9, 1e-11];
 const TARGETS: [f64; 3] = [1e-2, 1e-3, 1e-4];
@@ -69,7 +69,7 @@ fn main() -> ExitCode {
             ],
             vec![b(1_000, 10_000), b(10_000, 50_000), b(100_000, 100_000)],
         );
-        let ref_ics: u64 = args.pick(256, 8_000, 100_000);
+        let ref_ics: u64 = args.pick(256, 16_000, 100_000);
         let ref_t = args.pick(
             vec![500, 1_000, 2_000, 4_000],
             vec![2_500, 5_000, 10_000, 20_000, 40_000],
@@ -219,7 +219,9 @@ fn main() -> ExitCode {
             // The paper's sizes on the chart: 10⁵ × 10⁵ and the 10⁶-IC run at 5·10⁴.
             let paper: Vec<_> = planner.pilots.iter().map(|p| {
                 let at = |n: f64, t: f64| json!({"ics": n, "collisions": t, "predicted_rel_error": p.predicted_error(n, t) / lam.value.abs(), "predicted_wall_s": n * t * p.seconds_per_step});
-                json!({"method": p.method, "engine": p.engine, "paper_1e5x1e5": at(1e5, 1e5), "campaign_1e6x5e4": at(1e6, 5e4)})
+                let sizes = json!({"method": p.method, "engine": p.engine, "paper_1e5x1e5": at(1e5, 1e5), "campaign_1e6x5e4": at(1e6, 5e4)});
+                println!("  paper's sizes with {}: {sizes}", label(p.method, p.engine));
+                sizes
             }).collect();
             if k == 0 {
                 for (i, (&m, &e)) in methods

@@ -59,23 +59,90 @@ impl ErrorBudget {
     /// [`AnalysisError::InvalidOption`] if the budget would not be finite
     /// (a non-finite input).
     pub fn new(bias: &FiniteTimeBias, method: Option<&MethodBias>) -> Result<Self, AnalysisError> {
-        let value = bias.last();
-        let ft = bias.bias();
-        let mb = method.map_or(Measurement::new(0.0, 0.0), |m| m.difference);
-        let n = bias.n_ics;
+        Self::assemble(
+            bias.last(),
+            bias.n_ics,
+            *bias.checkpoints.last().expect("a fit has checkpoints"),
+            bias.regime,
+            bias.bias(),
+            method.map_or(Measurement::new(0.0, 0.0), |m| m.difference),
+        )
+    }
+
+    /// The budget of `value` (over `n_ics` initial conditions, `collisions`
+    /// each) with biases `ft` and `mb` measured on (possibly fewer of) its
+    /// initial conditions.
+    fn assemble(
+        value: Measurement,
+        n_ics: u64,
+        collisions: u64,
+        regime: BiasRegime,
+        ft: Measurement,
+        mb: Measurement,
+    ) -> Result<Self, AnalysisError> {
         let sem = value.sem;
-        let sem_of_sem = sem / (2.0 * (n.max(2) - 1) as f64).sqrt();
+        let sem_of_sem = sem / (2.0 * (n_ics.max(2) - 1) as f64).sqrt();
         let total = combine(sem, sem_of_sem, ft, mb)?;
         Ok(ErrorBudget {
             value,
-            collisions: *bias.checkpoints.last().expect("a fit has checkpoints"),
-            n_ics: n,
+            collisions,
+            n_ics,
             sem,
             finite_time_bias: ft,
-            regime: bias.regime,
+            regime,
             method_bias: mb,
             total,
         })
+    }
+
+    /// The budget of an existing `estimate` (a point of a sweep) of
+    /// `ensemble` (the same table, law, method and seed): its own SEM, and
+    /// the biases from its first `bias_ics` initial conditions read at
+    /// `T/8, T/4, T/2, T` in one nested scalar run (plus, for finite
+    /// differences, a tangent run of them at `T`). Costs about `bias_ics/N`
+    /// of the estimate, more for a tangent pairing.
+    ///
+    /// # Errors
+    /// [`AnalysisError::InvalidOption`] if `ensemble` does not match the
+    /// estimate (α, method, seed), `bias_ics < 2`, or fewer than 8
+    /// collisions per trajectory; then as [`measure`](Self::measure).
+    pub fn for_estimate<B: Boundary + Clone + Sync>(
+        ensemble: &Ensemble<B>,
+        estimate: &LyapunovEstimate,
+        bias_ics: u64,
+    ) -> Result<Self, AnalysisError> {
+        if ensemble.alpha().to_bits() != estimate.alpha.to_bits()
+            || ensemble.method != estimate.method
+            || ensemble.seed != estimate.seed
+        {
+            return Err(AnalysisError::invalid(
+                "error budget",
+                "the ensemble must have the estimate's alpha, method and seed",
+            ));
+        }
+        let t = estimate.collisions_per_ic;
+        if bias_ics < 2 || t < 8 {
+            return Err(AnalysisError::invalid(
+                "error budget",
+                format!(
+                    "needs at least 2 initial conditions and 8 collisions for the bias fit, got {bias_ics} and {t}"
+                ),
+            ));
+        }
+        let first = estimate.first_index;
+        let sub = ensemble
+            .clone()
+            .with_indices(first..first + bias_ics.min(estimate.n_ics))
+            .with_engine(crate::Engine::Scalar);
+        let (part, _) = Self::measure(&sub, &[t / 8, t / 4, t / 2, t])?;
+        Self::assemble(
+            Measurement::lambda(estimate),
+            estimate.n_ics,
+            t,
+            part.regime,
+            part.finite_time_bias,
+            part.method_bias,
+        )
     }
 
     /// Run `ensemble` at each of `checkpoints` (the same initial conditions;

@@ -74,6 +74,18 @@ pub enum BiasRegime {
     Neither,
 }
 
+impl BiasRegime {
+    /// `1/T`, `ln T / T` or `neither`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            BiasRegime::InverseT => BiasLaw::InverseT.name(),
+            BiasRegime::LogTOverT => BiasLaw::LogTOverT.name(),
+            BiasRegime::Neither => "neither",
+        }
+    }
+}
+
 /// A fit `λ_T = a + b·g(T)` of one [`BiasLaw`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]

@@ -19,6 +19,10 @@
 //!   through one observed driver ([`Ensemble::run_observed`]: progress
 //!   events, cancellation, stop reasons);
 //! - [`AlphaSweep`]: λ(α) curves, with [`SweepRow`] records for CSV/JSON;
+//! - what an estimate's error is made of and what shrinking it costs:
+//!   [`ErrorBudget`] (SEM, [`FiniteTimeBias`] from nested checkpoints,
+//!   [`MethodBias`], total), a [`Reference`] value, [`work_precision`] sets,
+//!   a [`Planner`] for a target total error and [`StopRule::total_error`];
 //! - [`FtleDistribution`]: histograms, moments, chaotic fraction over a band of
 //!   thresholds, the Datseris–Hupe–Fleischmann product;
 //! - diagnostics of the paper's mechanism: phase-space separation
@@ -134,7 +138,7 @@ pub use planner::{MethodPilot, PlannedRun, Planner, VarianceModel};
 pub use provenance::{Provenance, TableRecord};
 pub use q_pairs::{PairClass, QPair, QPairStatistics, q_pair_statistics};
 pub use result::{LyapunovEstimate, StopReason};
-pub use rows::{CSV_HEADER, SweepRow, csv_string, sweep_rows, write_csv};
+pub use rows::{BudgetRow, CSV_HEADER, SweepRow, csv_string, sweep_rows, write_csv};
 pub use saturation::{SeparationSummary, summarize_separation};
 pub use separation::{
     LinearFit, Separation, SeparationOptions, phase_space_separation, separation_growth,

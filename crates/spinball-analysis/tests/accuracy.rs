@@ -6,8 +6,8 @@
 //! standard errors. Run with `-- --nocapture` to see the numbers.
 
 use spinball_analysis::{
-    BiasLaw, BiasRegime, Engine, Ensemble, ErrorBudget, FiniteTimeBias, Method, Planner,
-    StopReason, Threads,
+    BiasLaw, BiasRegime, Budget, Engine, Ensemble, ErrorBudget, FiniteTimeBias, Method, Planner,
+    Reference, StopReason, StopRule, Threads, work_precision,
 };
 use spinball_core::SpinLaw;
 use spinball_geometry::{Circle, Rectangle, Stadium, Table};
@@ -223,4 +223,61 @@ fn planner_predicts_the_work_and_error_of_its_plan() {
         planner.clone().with_collision_range(250, 300).plan(1e-6),
         Err(spinball_analysis::AnalysisError::TargetUnreachable { .. })
     ));
+}
+
+/// A work–precision set has one point per method, engine and budget, each
+/// measured against the reference; the two engines give the same numbers
+/// (to rounding) at different costs; inputs that cannot work are refused.
+#[test]
+fn work_precision_points_and_refusals() {
+    let scene = Ensemble::new(Stadium::new(1.0).unwrap(), SpinLaw::new(0.5).unwrap())
+        .with_seed(31)
+        .with_threads(Threads::All);
+    let reference = Reference::measure(
+        &scene.clone().with_seed(32).with_ics(64),
+        &[250, 500, 1_000, 2_000],
+    )
+    .unwrap();
+    assert_eq!(reference.bias.n_ics, 64);
+    let methods = [Method::Tangent, Method::FiniteDifference { delta0: 1e-9 }];
+    let engines = [Engine::Lanes, Engine::Scalar];
+    let budgets = [Budget::new(8, 500), Budget::new(32, 1_000)];
+    let points = work_precision(&scene, &reference, &methods, &engines, &budgets).unwrap();
+    assert_eq!(points.len(), 8);
+    for (k, p) in points.iter().enumerate() {
+        assert_eq!(p.method, methods[k / 4]);
+        assert_eq!(p.engine, engines[(k / 2) % 2]);
+        assert_eq!(p.budget, budgets[k % 2]);
+        let d = p.estimate.value - reference.value.value;
+        assert!((p.error.value - d).abs() < 1e-15);
+        assert!((p.rel_error - d.hypot(p.estimate.sem) / reference.value.value).abs() < 1e-12);
+        assert!(p.wall_time_s >= 0.0 && p.ns_per_step.is_finite());
+    }
+    for (lanes, scalar) in points[..2].iter().zip(&points[2..4]) {
+        assert!((lanes.estimate.value - scalar.estimate.value).abs() < 1e-9);
+    }
+    assert!(work_precision(&scene, &reference, &[], &engines, &budgets).is_err());
+    assert!(work_precision(&scene, &reference, &methods, &[], &budgets).is_err());
+    assert!(work_precision(&scene, &reference, &methods, &engines, &[]).is_err());
+    let one_ic = [Budget::new(1, 100)];
+    assert!(work_precision(&scene, &reference, &methods, &engines, &one_ic).is_err());
+    // A total-error stop rule with a bias that is not a number is refused.
+    let bad = StopRule::total_error(8, 0.01, f64::NAN);
+    assert!(scene.clone().with_ics(64).run_until(&bad).is_err());
+    // A budget for a point needs the point's own ensemble.
+    let est = scene
+        .clone()
+        .with_ics(16)
+        .with_collisions(400)
+        .run()
+        .unwrap();
+    let other = scene.clone().with_law(SpinLaw::new(0.3).unwrap());
+    assert!(ErrorBudget::for_estimate(&other, &est, 8).is_err());
+    assert!(ErrorBudget::for_estimate(&scene, &est, 1).is_err());
+    let budget = ErrorBudget::for_estimate(&scene, &est, 8).unwrap();
+    assert_eq!(
+        (budget.sem, budget.n_ics, budget.collisions),
+        (est.sem, 16, 400)
+    );
+    assert!(budget.total.value >= budget.sem);
 }
