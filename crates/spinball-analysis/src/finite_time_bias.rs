@@ -64,9 +64,11 @@ impl BiasLaw {
 pub enum BiasRegime {
     /// `1/T` fits (the chaotic transient; the extrapolation in `1/T` holds).
     InverseT,
-    /// `1/T` is rejected and `ln T / T` fits: regular orbits dominate the
-    /// bias; the `1/T` extrapolation is not to be trusted and `λ_T`
-    /// approaches its limit only logarithmically slowly.
+    /// `1/T` is rejected, `ln T / T` fits and its coefficient is resolved
+    /// and positive: regular orbits (all of them on an integrable table,
+    /// the islands in a mixed phase space) shape the bias; the `1/T`
+    /// extrapolation is not to be trusted and `λ_T` approaches its limit
+    /// only like `ln T / T`.
     LogTOverT,
     /// Neither law fits (too short runs, a mixture of both, or
     /// checkpoints too close to the transient): the bias estimate is a
@@ -112,11 +114,26 @@ pub struct BiasFit {
 }
 
 impl BiasFit {
-    /// Whether the fit is acceptable: `χ²/dof` below the 99.9% point of a
-    /// `χ²` law with `dof` degrees of freedom (Wilson–Hilferty).
+    /// Whether the fit is acceptable for a large ensemble: `χ²` below the
+    /// 99.9% point of a `χ²` law with `dof` degrees of freedom
+    /// (Wilson–Hilferty).
     #[must_use]
     pub fn consistent(&self) -> bool {
         self.chi2 <= chi2_quantile_999(self.dof)
+    }
+
+    /// As [`consistent`](Self::consistent) for a fit over `n_ics` initial
+    /// conditions: each term of `χ²` divides by a variance estimated from
+    /// `n_ics` values (a Student `t` with `n − 1` degrees of freedom, of
+    /// variance `(n − 1)/(n − 3)`), so the critical value is scaled by that
+    /// factor; with 3 or fewer initial conditions nothing is rejected.
+    #[must_use]
+    pub fn consistent_for(&self, n_ics: usize) -> bool {
+        if n_ics <= 3 {
+            return true;
+        }
+        let inflation = (n_ics - 1) as f64 / (n_ics - 3) as f64;
+        self.chi2 <= inflation * chi2_quantile_999(self.dof)
     }
 
     /// The bias the fit predicts at `collisions` collisions, `b·g(T) +
@@ -206,12 +223,15 @@ impl FiniteTimeBias {
         };
         let inverse_t = fit_law(BiasLaw::InverseT, checkpoints, per_ic, &weights)?;
         let log_t = fit_law(BiasLaw::LogTOverT, checkpoints, per_ic, &weights)?;
-        // ln T / T only where 1/T fails: the log law has a parameter more
-        // and fits 1/T data as well.
-        let regime = match (inverse_t.consistent(), log_t.consistent()) {
+        // ln T / T only where 1/T fails (the log law has a parameter more
+        // and fits 1/T data as well) and the ln T / T term is resolved and
+        // positive: regular orbits approach their limit from above.
+        let n = per_ic.len();
+        let log_resolved = log_t.coefficient.value > 3.0 * log_t.coefficient.sem;
+        let regime = match (inverse_t.consistent_for(n), log_t.consistent_for(n)) {
             (true, _) => BiasRegime::InverseT,
-            (false, true) => BiasRegime::LogTOverT,
-            (false, false) => BiasRegime::Neither,
+            (false, true) if log_resolved => BiasRegime::LogTOverT,
+            (false, _) => BiasRegime::Neither,
         };
         let systematic = if regime == BiasRegime::Neither {
             (inverse_t.limit.value - log_t.limit.value).abs()
