@@ -142,8 +142,11 @@ fn main() -> ExitCode {
             )?;
             let (lam, regime) = (reference.value, reference.bias.regime);
             println!(
-                "{name}: reference λ = {:.6} ± {:.1e} ({regime:?}, {:.1} s)",
-                lam.value, lam.sem, reference.wall_time_s
+                "{name}: reference λ = {:.6} ± {:.1e} ({}, {:.2} s)",
+                lam.value,
+                lam.sem,
+                regime.name(),
+                reference.wall_time_s
             );
             let (methods, engines) = if k == 0 {
                 (all_methods.clone(), vec![Engine::Lanes, Engine::Scalar])
@@ -211,7 +214,8 @@ fn main() -> ExitCode {
                             plans.push(json!({"target": target, "plan": p}));
                         }
                         Err(e) => {
-                            plans.push(json!({"target": target, "unreachable": e.to_string()}))
+                            println!("  {:>6}%: {e}", 100.0 * target);
+                            plans.push(json!({"target": target, "unreachable": e.to_string()}));
                         }
                     }
                 }

@@ -208,12 +208,7 @@ impl FiniteTimeBias {
         check_series(checkpoints, per_ic)?;
         let k = checkpoints.len();
         let column = |j: usize| -> Accumulator { per_ic.iter().map(|row| row[j]).collect() };
-        let means: Vec<Measurement> = (0..k)
-            .map(|j| {
-                let acc = column(j);
-                Measurement::new(acc.mean().unwrap_or(0.0), acc.sem().unwrap_or(0.0))
-            })
-            .collect();
+        let means: Vec<Measurement> = (0..k).map(|j| mean_sem(&column(j))).collect();
         // Weights from the scatter at each checkpoint; equal weights if any
         // checkpoint has none (identical trajectories).
         let weights: Vec<f64> = if means.iter().all(|m| m.sem > 0.0) {
@@ -455,8 +450,6 @@ fn fit_law(
             r.push(row[m] - fit);
         }
     }
-    let ms =
-        |acc: &Accumulator| Measurement::new(acc.mean().unwrap_or(0.0), acc.sem().unwrap_or(0.0));
     // χ² of the mean residuals against their per-IC standard errors; a
     // residual of (nearly) zero with zero scatter counts zero.
     let chi2 = residuals
@@ -474,13 +467,18 @@ fn fit_law(
         .sum();
     Ok(BiasFit {
         law,
-        limit: ms(&coef_acc[0]),
-        coefficient: ms(&coef_acc[1]),
-        shift: coef_acc.get(2).map_or(Measurement::new(0.0, 0.0), ms),
-        bias: ms(&bias_acc),
+        limit: mean_sem(&coef_acc[0]),
+        coefficient: mean_sem(&coef_acc[1]),
+        shift: coef_acc.get(2).map_or(Measurement::new(0.0, 0.0), mean_sem),
+        bias: mean_sem(&bias_acc),
         chi2,
         dof: k - p,
     })
+}
+
+/// Mean ± SEM of `acc` (which holds at least two values here).
+fn mean_sem(acc: &Accumulator) -> Measurement {
+    Measurement::new(acc.mean().unwrap_or(0.0), acc.sem().unwrap_or(0.0))
 }
 
 /// The 99.9% point of a `χ²` law with `dof` degrees of freedom

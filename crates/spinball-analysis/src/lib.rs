@@ -21,7 +21,7 @@
 //! - [`AlphaSweep`]: λ(α) curves, with [`SweepRow`] records for CSV/JSON;
 //! - what an estimate's error is made of and what shrinking it costs:
 //!   [`ErrorBudget`] (SEM, [`FiniteTimeBias`] from nested checkpoints,
-//!   [`MethodBias`], total), a [`Reference`] value, [`work_precision`] sets,
+//!   [`MethodBias`], total), a [`Reference`] value, [`work_precision()`] sets,
 //!   a [`Planner`] for a target total error and [`StopRule::total_error`];
 //! - [`FtleDistribution`]: histograms, moments, chaotic fraction over a band of
 //!   thresholds, the Datseris–Hupe–Fleischmann product;

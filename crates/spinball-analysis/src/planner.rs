@@ -10,11 +10,11 @@
 //!   space keeps a floor `v_∞`, the spread between chaotic and regular
 //!   trajectories);
 //! - the finite-time bias `b·g(T)` ([`FiniteTimeBias`]);
-//! - the method bias `m` against tangent dynamics ([`MethodBias`], taken
-//!   as independent of `T`).
+//! - the method bias `m` against tangent dynamics ([`MethodBias`]), carried
+//!   to other run lengths like `ln T / T` (it is a finite-time effect).
 //!
 //! The predicted total error of `N × T` is then
-//! `ε² = σ²(T)/N + (b_eff g(T))² + m_eff²`, each bias counted with its pilot
+//! `ε² = σ²(T)/N + (b_eff g(T))² + m_eff(T)²`, each bias counted with its pilot
 //! uncertainty (`b_eff² = b² + σ_b²`, as in [`ErrorBudget`](crate::ErrorBudget)),
 //! and [`Planner::plan`] searches run lengths on a log grid for the least
 //! predicted wall time `N · T · cost` meeting the target. The planned run
@@ -27,7 +27,7 @@ use crate::convergence::convergence_estimates;
 use crate::engine::Engine;
 use crate::ensemble::Ensemble;
 use crate::error::AnalysisError;
-use crate::finite_time_bias::{BiasFit, FiniteTimeBias};
+use crate::finite_time_bias::{BiasFit, BiasLaw, BiasRegime, FiniteTimeBias};
 use crate::lyapunov::Method;
 use crate::measurement::Measurement;
 use crate::method_bias::MethodBias;
@@ -104,8 +104,17 @@ pub struct MethodPilot {
     pub variance: VarianceModel,
     /// The finite-time bias fit (of the regime the pilot found).
     pub finite_time: BiasFit,
-    /// The method bias against the tangent method (zero for tangent).
+    /// The regime the pilot found. A plan is an extrapolation of the
+    /// pilot: trust it where this is `1/T`; `ln T / T` or `neither` (a
+    /// near-integrable table, long-lived regular motion) means the bias
+    /// can fall more slowly than the pilot shows, so check the planned
+    /// run's own [`ErrorBudget`](crate::ErrorBudget).
+    pub regime: BiasRegime,
+    /// The method bias against the tangent method at the pilot's longest
+    /// run (zero for tangent).
     pub method_bias: Measurement,
+    /// The pilot's longest run, where `method_bias` was measured.
+    pub pilot_collisions: u64,
     /// The pilot's mean exponent at its longest run.
     pub lambda: Measurement,
 }
@@ -116,7 +125,7 @@ impl MethodPilot {
     pub fn predicted_error(&self, ics: f64, collisions: f64) -> f64 {
         (self.variance.at(collisions) / ics
             + self.bias_at(collisions).powi(2)
-            + self.method_bias_magnitude().powi(2))
+            + self.method_bias_at(collisions).powi(2))
         .sqrt()
     }
 
@@ -127,10 +136,17 @@ impl MethodPilot {
         self.finite_time.bias_bound(collisions)
     }
 
-    /// `m_eff = √(m² + σ_m²)`.
+    /// The method bias magnitude counted at `collisions`: `√(m² + σ_m²)`
+    /// from the pilot, carried to `T` like `ln T / T`. The difference is a
+    /// finite-time effect (an offset of order one in the summed logarithms,
+    /// and on regular orbits the shear that finite differences do not see),
+    /// so it falls at least that fast; `ln T / T` is the slower of the two
+    /// and the conservative choice.
     #[must_use]
-    pub fn method_bias_magnitude(&self) -> f64 {
-        self.method_bias.value.hypot(self.method_bias.sem)
+    pub fn method_bias_at(&self, collisions: f64) -> f64 {
+        let g = BiasLaw::LogTOverT;
+        let scale = g.g(collisions) / g.g(self.pilot_collisions.max(3) as f64);
+        self.method_bias.value.hypot(self.method_bias.sem) * scale
     }
 }
 
@@ -243,7 +259,9 @@ impl Planner {
                     &columns.iter().map(|c| c.std * c.std).collect::<Vec<_>>(),
                 ),
                 finite_time: *bias.preferred(),
+                regime: bias.regime,
                 method_bias,
+                pilot_collisions: last.collisions_per_ic,
                 lambda: Measurement::lambda(last),
             });
         }
@@ -366,7 +384,7 @@ impl Planner {
         let mut floor = f64::INFINITY;
         for &t in grid {
             let tf = t as f64;
-            let bias = pilot.bias_at(tf).hypot(pilot.method_bias_magnitude());
+            let bias = pilot.bias_at(tf).hypot(pilot.method_bias_at(tf));
             floor = floor.min(bias);
             let room = eps * eps - bias * bias;
             if room <= 0.0 {

@@ -19,7 +19,7 @@ use crate::result::StopReason;
 /// error `√(SEM² + bias²) ≤ target · |mean|` instead (the bias from a pilot:
 /// finite-time and method bias, see [`ErrorBudget`](crate::ErrorBudget) and
 /// [`Planner`](crate::Planner)); such a run stops with
-/// [`StopReason::TotalErrorReached`](crate::StopReason::TotalErrorReached).
+/// [`StopReason::TotalErrorReached`].
 /// A bias of `target · |mean|` or more can never be reached: the run then
 /// ends on its budget or its range.
 #[derive(Debug, Clone, Copy, PartialEq)]
