@@ -74,12 +74,8 @@ fn main() -> ExitCode {
     let mut budgets = Vec::new();
     for &law in &args.laws {
         let ensemble = args.ensemble(law);
-        let measured = ensemble.run().and_then(|est| {
-            let budget = ErrorBudget::for_estimate(&ensemble, &est, BIAS_ICS)?;
-            Ok((BudgetRow::new(&est, &budget), est))
-        });
-        let (budget, est) = match measured {
-            Ok(pair) => pair,
+        let est = match ensemble.run() {
+            Ok(est) => est,
             Err(e) => {
                 eprintln!("sweep: alpha = {}: {e}", law.alpha());
                 return ExitCode::FAILURE;
@@ -89,8 +85,20 @@ fn main() -> ExitCode {
             "{:>8} {:>10.5} {:>9.5} {:>10.5} {:>7.3} {:>9.2}",
             est.alpha, est.mean, est.sem, est.median, est.chaotic_fraction, est.wall_time_s
         );
-        budgets.push(budget.table_line());
-        if let Err(e) = doc.push_with_budget(&est, budget) {
+        // The budget needs a bias fit (at least 8 collisions); a point
+        // without one is still written, with the reason on stderr.
+        let pushed = match ErrorBudget::for_estimate(&ensemble, &est, BIAS_ICS) {
+            Ok(budget) => {
+                let row = BudgetRow::new(&est, &budget);
+                budgets.push(row.table_line());
+                doc.push_with_budget(&est, row)
+            }
+            Err(e) => {
+                eprintln!("sweep: alpha = {}: no error budget: {e}", law.alpha());
+                doc.push(&est)
+            }
+        };
+        if let Err(e) = pushed {
             eprintln!("sweep: {e}");
             return ExitCode::FAILURE;
         }
