@@ -366,6 +366,19 @@ mod tests {
     }
 
     #[test]
+    fn budget_rows_line_up_with_their_header() {
+        let e = template().with_ics(16).with_collisions(400).run().unwrap();
+        let budget = crate::ErrorBudget::for_estimate(&template(), &e, 8);
+        // The budget reads the estimate's 400 collisions, not the template's 300.
+        assert!(budget.is_ok());
+        let row = BudgetRow::new(&e, &budget.unwrap());
+        assert_eq!(row.stop, "completed");
+        assert_eq!((row.alpha, row.mean, row.sem), (e.alpha, e.mean, e.sem));
+        assert!(row.total >= row.sem);
+        assert_eq!(row.table_line().len(), BudgetRow::table_header().len());
+    }
+
+    #[test]
     fn small_numbers_keep_their_digits() {
         assert_eq!(fixed_or_sci(0.43027, 5), "0.43027");
         assert_eq!(fixed_or_sci(0.00013, 5), "1.30e-4");
