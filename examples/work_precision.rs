@@ -31,7 +31,8 @@ use serde_json::json;
 use spinball_analysis::{Budget, Engine, Method, Planner, Reference, work_precision};
 use spinball_core::SpinLaw;
 use spinball_plot::{
-    Csv, Grid, Legend, LineKind, LinePlot, Series, optional, palette, run_figure, template,
+    Csv, Grid, Legend, LineKind, LinePlot, Series, WORK_COLUMNS, bias_vs_t, error_vs_time,
+    method_label, palette, run_figure, sem_vs_n, template, time_to_target, work_rows,
 };
 
 const NAME: &str = "work_precision";
@@ -48,11 +49,8 @@ const SCENES: [(&str, f64); 7] = [
 const DELTAS: [f64; 4] = [1e-5, 1e-7, 1e-9, 1e-11];
 const TARGETS: [f64; 3] = [1e-2, 1e-3, 1e-4];
 
-fn label(method: Method, engine: Engine) -> String {
-    match method {
-        Method::FiniteDifference { delta0 } => format!("FD δ0={delta0:e}, {}", engine.name()),
-        Method::Tangent => format!("tangent, {}", engine.name()),
-    }
+fn log_plot(title: &str, x: &str, y: &str) -> LinePlot {
+    LinePlot::with_axes(title, x, y).log_x(true).log_y(true)
 }
 
 fn main() -> ExitCode {
@@ -69,68 +67,43 @@ fn main() -> ExitCode {
             ],
             vec![b(1_000, 10_000), b(10_000, 50_000), b(100_000, 100_000)],
         );
-        let ref_ics: u64 = args.pick(256, 16_000, 100_000);
-        let ref_t = args.pick(
-            vec![500, 1_000, 2_000, 4_000],
-            vec![2_500, 5_000, 10_000, 20_000, 40_000],
-            vec![10_000, 20_000, 50_000, 100_000],
+        let (ref_ics, ref_t) = args.pick(
+            (256, vec![500, 1_000, 2_000, 4_000]),
+            (16_000, vec![2_500, 5_000, 10_000, 20_000]),
+            (100_000, vec![10_000, 20_000, 50_000, 100_000]),
         );
-        let pilot_ics: u64 = args.pick(32, 256, 1_000);
-        let pilot_t = args.pick(
-            vec![250, 500, 1_000, 2_000],
-            vec![1_000, 2_000, 4_000, 8_000],
-            vec![2_500, 5_000, 10_000, 20_000],
+        let (pilot_ics, pilot_t) = args.pick(
+            (32, vec![250, 500, 1_000, 2_000]),
+            (256, vec![1_000, 2_000, 4_000, 8_000]),
+            (1_000, vec![2_500, 5_000, 10_000, 20_000]),
         );
+        let fd = |d| Method::FiniteDifference { delta0: d };
         let all_methods: Vec<Method> = DELTAS
-            .iter()
-            .map(|&d| Method::FiniteDifference { delta0: d })
+            .map(fd)
+            .into_iter()
             .chain([Method::Tangent])
             .collect();
-        let mut csv = Csv::new(&[
-            "table",
-            "alpha",
-            "method",
-            "delta0",
-            "engine",
-            "ics",
-            "collisions",
-            "wall_time_s",
-            "ns_per_step",
-            "mean",
-            "sem",
-            "error",
-            "error_sem",
-            "rel_error",
-        ]);
-        let (mut wp, mut bias_t, mut sem_n, mut to_target) = (
-            LinePlot::with_axes(
-                "Stadium a = 1, α = 0.5: error against wall time",
-                "wall time (s)",
-                "√(Δ² + SEM²) / λ_ref",
-            )
-            .log_x(true)
-            .log_y(true),
-            LinePlot::with_axes(
-                "Finite-time bias |λ_T − λ_ref| / λ_ref (tangent)",
-                "T (collisions)",
-                "relative bias",
-            )
-            .log_x(true)
-            .log_y(true),
-            LinePlot::with_axes(
-                "Statistical error SEM / λ_ref (tangent, lanes)",
-                "N (initial conditions)",
-                "relative SEM",
-            )
-            .log_x(true)
-            .log_y(true),
-            LinePlot::with_axes(
-                "Stadium a = 1, α = 0.5: planned wall time to a total error",
-                "target relative total error",
-                "predicted wall time (s)",
-            )
-            .log_x(true)
-            .log_y(true),
+        let mut csv = Csv::new(&WORK_COLUMNS);
+        let main_title = "Stadium a = 1, α = 0.5";
+        let mut wp = log_plot(
+            &format!("{main_title}: error against wall time"),
+            "wall time (s)",
+            "√(Δ² + SEM²) / λ_ref",
+        );
+        let mut bias_t = log_plot(
+            "Finite-time bias |λ_T − λ_ref| / λ_ref (tangent)",
+            "T (collisions)",
+            "relative bias",
+        );
+        let mut sem_n = log_plot(
+            "Statistical error SEM / λ_ref (tangent, lanes)",
+            "N (initial conditions)",
+            "relative SEM",
+        );
+        let mut to_target = log_plot(
+            &format!("{main_title}: planned wall time to a total error"),
+            "target relative total error",
+            "predicted wall time (s)",
         );
         let mut scenes = Vec::new();
         for (k, &(spec, alpha)) in SCENES.iter().enumerate() {
@@ -140,14 +113,15 @@ fn main() -> ExitCode {
                 &scene.clone().with_seed(args.seed + 1).with_ics(ref_ics),
                 &ref_t,
             )?;
-            let (lam, regime) = (reference.value, reference.bias.regime);
+            let lam = reference.value;
             println!(
                 "{name}: reference λ = {:.6} ± {:.1e} ({}, {:.2} s)",
                 lam.value,
                 lam.sem,
-                regime.name(),
+                reference.bias.regime.name(),
                 reference.wall_time_s
             );
+            // Every method and engine on the first scene, the two usual ones elsewhere.
             let (methods, engines) = if k == 0 {
                 (all_methods.clone(), vec![Engine::Lanes, Engine::Scalar])
             } else {
@@ -157,56 +131,23 @@ fn main() -> ExitCode {
                 )
             };
             let points = work_precision(&scene, &reference, &methods, &engines, &budgets)?;
-            for p in &points {
-                let d0 = optional(p.method.delta0());
-                csv.row(&[
-                    &spec,
-                    &alpha,
-                    &p.method.name(),
-                    &d0,
-                    &p.engine.name(),
-                    &p.budget.ics,
-                    &p.budget.collisions,
-                    &p.wall_time_s,
-                    &p.ns_per_step,
-                    &p.estimate.value,
-                    &p.estimate.sem,
-                    &p.error.value,
-                    &p.error.sem,
-                    &p.rel_error,
-                ]);
-            }
-            let rel = |m: f64| m / lam.value.abs();
-            let color = palette(k);
-            let columns = reference.bias.checkpoints.iter().zip(&reference.bias.means);
-            bias_t = bias_t.series(
-                Series::new(
-                    name.clone(),
-                    columns.map(|(&t, m)| (t as f64, rel((m.value - lam.value).abs()))),
-                )
-                .color(color),
-            );
-            let tangent = points
-                .iter()
-                .filter(|p| p.method == Method::Tangent && p.engine == Engine::Lanes);
+            work_rows(&mut csv, spec, alpha, &points);
+            bias_t = bias_t.series(bias_vs_t(&name, &reference).color(palette(k)));
             sem_n = sem_n.series(
-                Series::new(
-                    name.clone(),
-                    tangent.map(|p| (p.budget.ics as f64, rel(p.estimate.sem))),
-                )
-                .color(color),
+                sem_vs_n(&name, &points, &reference, Method::Tangent, Engine::Lanes)
+                    .color(palette(k)),
             );
-            let pilot_scene = scene.clone().with_seed(args.seed + 2).with_ics(pilot_ics);
-            let planner = Planner::pilot(&pilot_scene, &methods, &pilot_t)?;
+            let pilot = scene.clone().with_seed(args.seed + 2).with_ics(pilot_ics);
+            let planner = Planner::pilot(&pilot, &methods, &pilot_t)?;
             let mut plans = Vec::new();
             for target in TARGETS {
                 for plan in planner.plans(target)? {
                     match plan {
                         Ok(p) => {
+                            let what = method_label(p.method, p.engine);
                             println!(
-                                "  {:>6}% with {:<22}: {:>8} ICs x {:>8} collisions, predicted {:.3} s",
+                                "  {:>6}% with {what:<22}: {:>8} ICs x {:>8} collisions, predicted {:.3} s",
                                 100.0 * target,
-                                label(p.method, p.engine),
                                 p.ics,
                                 p.collisions,
                                 p.predicted_wall_s
@@ -220,58 +161,20 @@ fn main() -> ExitCode {
                     }
                 }
             }
-            // The paper's sizes on the chart: 10⁵ × 10⁵ and the 10⁶-IC run at 5·10⁴.
+            // The paper's sizes on the chart: 10⁵ × 10⁵, and a 10⁶-IC run at 5·10⁴.
             let paper: Vec<_> = planner.pilots.iter().map(|p| {
-                let at = |n: f64, t: f64| json!({"ics": n, "collisions": t, "predicted_rel_error": p.predicted_error(n, t) / lam.value.abs(), "predicted_wall_s": n * t * p.seconds_per_step});
-                let sizes = json!({"method": p.method, "engine": p.engine, "paper_1e5x1e5": at(1e5, 1e5), "campaign_1e6x5e4": at(1e6, 5e4)});
-                println!("  paper's sizes with {}: {sizes}", label(p.method, p.engine));
-                sizes
+                let at = |n: f64, t: f64| json!({"ics": n, "collisions": t, "predicted_rel_error": p.predicted_error(n, t) / lam.value.abs(), "predicted_wall_s": p.predicted_wall_s(n, t)});
+                json!({"method": p.method, "engine": p.engine, "paper_1e5x1e5": at(1e5, 1e5), "campaign_1e6x5e4": at(1e6, 5e4)})
             }).collect();
             if k == 0 {
-                for (i, (&m, &e)) in methods
-                    .iter()
-                    .flat_map(|m| engines.iter().map(move |e| (m, e)))
-                    .enumerate()
-                {
-                    let curve = points
-                        .iter()
-                        .filter(|p| p.method == m && p.engine == e)
-                        .map(|p| (p.wall_time_s, p.rel_error));
-                    let kind = if e == Engine::Scalar {
-                        LineKind::Dashed
-                    } else {
-                        LineKind::Solid
-                    };
-                    wp = wp.series(
-                        Series::new(label(m, e), curve)
-                            .kind(kind)
-                            .color(palette(i / 2)),
-                    );
-                }
-                for (i, pilot) in planner.pilots.iter().enumerate() {
-                    let curve = TARGETS.iter().filter_map(|&t| {
-                        planner
-                            .plans(t)
-                            .ok()?
-                            .into_iter()
-                            .nth(i)?
-                            .ok()
-                            .map(|p| (t, p.predicted_wall_s))
-                    });
-                    to_target = to_target.series(
-                        Series::new(label(pilot.method, pilot.engine), curve).color(palette(i)),
-                    );
-                }
+                wp = error_vs_time(wp, &points);
+                to_target = time_to_target(to_target, &planner, &TARGETS);
             }
             scenes.push(json!({"table": spec, "alpha": alpha, "reference": reference, "points": points, "pilots": planner.pilots, "plans": plans, "paper_sizes": paper}));
         }
         let guide = |n: f64| (n, 1.0 / n.sqrt());
-        sem_n = sem_n.series(
-            Series::new("∝ 1/√N", [guide(10.0), guide(1e5)])
-                .line_only()
-                .kind(LineKind::Dashed)
-                .color(palette(7)),
-        );
+        let guide = Series::new("∝ 1/√N", [guide(10.0), guide(1e5)]).line_only();
+        sem_n = sem_n.series(guide.kind(LineKind::Dashed).color(palette(7)));
         let grid = Grid::new(2, 2)
             .panel(wp.legend(Legend::LowerLeft))
             .panel(bias_t.legend(Legend::LowerLeft))
@@ -283,7 +186,8 @@ fn main() -> ExitCode {
             args.pick((1400, 1100), (1800, 1400), (1800, 1400)),
         )?;
         report.csv(&format!("{NAME}.csv"), &csv)?;
-        report.json(&format!("{NAME}.json"), &json!({"mode": args.mode.to_string(), "seed": args.seed, "budgets": budgets, "scenes": scenes}))?;
+        let doc = json!({"mode": args.mode.to_string(), "seed": args.seed, "budgets": budgets, "scenes": scenes});
+        report.json(&format!("{NAME}.json"), &doc)?;
         Ok(())
     })
 }

@@ -129,6 +129,12 @@ impl MethodPilot {
         .sqrt()
     }
 
+    /// Predicted wall time of `ics × collisions` on the pilot's machine.
+    #[must_use]
+    pub fn predicted_wall_s(&self, ics: f64, collisions: f64) -> f64 {
+        ics * collisions * self.seconds_per_step
+    }
+
     /// The finite-time bias magnitude counted at `collisions`, each
     /// coefficient at `√(value² + sem²)` ([`BiasFit::bias_bound`]).
     #[must_use]
