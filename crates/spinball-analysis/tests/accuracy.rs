@@ -281,3 +281,45 @@ fn work_precision_points_and_refusals() {
     );
     assert!(budget.total.value >= budget.sem);
 }
+
+/// Everything is generic over the table: a user's segment table (an
+/// L-shaped room) gets a budget, a reference and a plan like the built-in
+/// ones.
+#[test]
+fn user_tables_get_budgets_and_plans() {
+    use spinball_geometry::{DVec2, SegmentTable};
+    let p = DVec2::new;
+    let room = SegmentTable::polygon(&[
+        p(0.0, 0.0),
+        p(2.0, 0.0),
+        p(2.0, 1.0),
+        p(1.0, 1.0),
+        p(1.0, 2.0),
+        p(0.0, 2.0),
+    ])
+    .unwrap();
+    let scene = Ensemble::new(room, SpinLaw::new(0.5).unwrap())
+        .with_seed(41)
+        .with_ics(24)
+        .with_method(Method::Tangent);
+    let checkpoints = [250, 500, 1_000, 2_000];
+    let (budget, columns) = ErrorBudget::measure(&scene, &checkpoints).unwrap();
+    assert_eq!(columns.len(), 4);
+    assert!(budget.total.value.is_finite() && budget.total.value >= budget.sem);
+    let reference = Reference::measure(&scene.clone().with_seed(42), &checkpoints).unwrap();
+    assert!(reference.value.value.is_finite() && reference.value.sem > 0.0);
+    let planner = Planner::pilot(&scene, &[Method::Tangent], &checkpoints).unwrap();
+    // Either a plan or a typed refusal (λ of this room may be unresolved),
+    // never a number that is not one.
+    match planner.plan(0.05) {
+        Ok(plan) => assert!(plan.predicted_error.is_finite() && plan.ics >= 16),
+        Err(e) => assert!(
+            matches!(
+                e,
+                spinball_analysis::AnalysisError::InvalidOption { .. }
+                    | spinball_analysis::AnalysisError::TargetUnreachable { .. }
+            ),
+            "{e}"
+        ),
+    }
+}
