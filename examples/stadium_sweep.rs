@@ -16,8 +16,10 @@
 //! stderr, and writes into `--out` (default `out/stadium_sweep`):
 //! - `stadium_sweep.csv`: one row per method and α (every field of
 //!   `spinball_analysis::SweepRow`);
-//! - `stadium_sweep.json`: the same points with each curve's plan, and the
-//!   paired difference tangent − fd per α;
+//! - `stadium_sweep.json`: the same points with each curve's plan, the
+//!   paired difference tangent − fd per α, and each point's error budget
+//!   (SEM, finite-time bias fitted on its first 256 ICs at T/8 … T, method
+//!   bias, total error, stop reason; also printed as a table);
 //! - `stadium_sweep.png`: λ(α) ± SEM for both methods with the paper's
 //!   values, and the paired difference on the same ICs.
 //!
@@ -26,7 +28,10 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::{Measurement, Method, linspace, paired_difference, paper};
+use spinball_analysis::{
+    BudgetRow, ErrorBudget, Measurement, Method, linspace, paired_difference, paper,
+};
+use spinball_core::SpinLaw;
 use spinball_plot::{
     ALPHA_LABEL, Grid, Job, LAMBDA_LABEL, LineKind, LinePlot, Plan, Series, measured, palette,
     paper_markers, run_figure, run_jobs, template, write_curves,
@@ -73,6 +78,24 @@ fn main() -> ExitCode {
             diffs.push((a.alpha, d));
             in_sem.push((a.alpha, Measurement::new(d.value / a.sem, d.sem / a.sem)));
         }
+        // Each point's error budget: the SEM is one of three errors.
+        let mut budgets = Vec::new();
+        for (curve, m) in curves.iter().zip([Method::default(), Method::Tangent]) {
+            println!(
+                "\nerror budget, {}:\n{}",
+                curve.label,
+                BudgetRow::table_header()
+            );
+            for e in &curve.estimates {
+                let at = stadium
+                    .clone()
+                    .with_method(m)
+                    .with_law(SpinLaw::new(e.alpha)?);
+                let row = BudgetRow::new(e, &ErrorBudget::for_estimate(&at, e, 256)?);
+                println!("{}", row.table_line());
+                budgets.push(row);
+            }
+        }
         let worst = curves
             .iter()
             .flat_map(|c| &c.estimates)
@@ -103,7 +126,7 @@ fn main() -> ExitCode {
             .y_range(-1.5, 1.5);
         let grid = Grid::new(1, 2).panel(lambda).panel(difference);
         report.png(&format!("{NAME}.png"), &grid, (1500, 640))?;
-        let extra = json!({"paired_difference_tangent_minus_fd": diffs, "largest_rel_sem": worst});
+        let extra = json!({"paired_difference_tangent_minus_fd": diffs, "largest_rel_sem": worst, "error_budgets": budgets});
         write_curves(report, NAME, &curves, &extra)?;
         Ok(())
     })

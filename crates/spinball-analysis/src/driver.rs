@@ -317,7 +317,7 @@ impl<B: Boundary + Sync> Ensemble<B> {
             match stop {
                 Some(rule) => {
                     if rule.target_met(acc.count(), mean, sem) {
-                        break StopReason::TargetReached;
+                        break rule.reached();
                     }
                     if rule.time_budget.is_some_and(|b| clock.elapsed() >= b) {
                         break StopReason::TimeBudget;

@@ -57,6 +57,17 @@ pub enum AnalysisError {
         /// Index of the initial condition.
         index: u64,
     },
+    /// No method reaches a target error within the run lengths allowed:
+    /// the bias (finite-time and method) is above the target everywhere.
+    #[error(
+        "target total error {target:.3e} cannot be reached: the smallest bias of any method is {floor:.3e} (allow longer runs or the tangent method, or aim higher)"
+    )]
+    TargetUnreachable {
+        /// The target, absolute.
+        target: f64,
+        /// The smallest bias floor found.
+        floor: f64,
+    },
     /// An observer stopped the run before any estimate could be formed.
     #[error("the run was cancelled before two initial conditions finished")]
     Cancelled,

@@ -19,6 +19,10 @@
 //!   through one observed driver ([`Ensemble::run_observed`]: progress
 //!   events, cancellation, stop reasons);
 //! - [`AlphaSweep`]: λ(α) curves, with [`SweepRow`] records for CSV/JSON;
+//! - what an estimate's error is made of and what shrinking it costs:
+//!   [`ErrorBudget`] (SEM, [`FiniteTimeBias`] from nested checkpoints,
+//!   [`MethodBias`], total), a [`Reference`] value, [`work_precision()`] sets,
+//!   a [`Planner`] for a target total error and [`StopRule::total_error`];
 //! - [`FtleDistribution`]: histograms, moments, chaotic fraction over a band of
 //!   thresholds, the Datseris–Hupe–Fleischmann product;
 //! - diagnostics of the paper's mechanism: phase-space separation
@@ -68,13 +72,17 @@ pub mod energy;
 pub mod engine;
 pub mod ensemble;
 pub mod error;
+pub mod error_budget;
+pub mod finite_time_bias;
 pub mod ftle;
 pub mod islands;
 pub mod lyapunov;
 pub mod measurement;
+pub mod method_bias;
 pub mod paper;
 pub mod parallel;
 pub mod partial;
+pub mod planner;
 pub mod provenance;
 pub mod q_pairs;
 pub mod result;
@@ -91,6 +99,7 @@ pub mod stop_rule;
 mod test_support;
 pub mod trajectory;
 pub mod wall_statistics;
+pub mod work_precision;
 
 // Phase space: sections, FTLE maps, the bouncing-ball island, return times.
 pub mod bouncing_ball;
@@ -117,6 +126,8 @@ pub use energy::{
 pub use engine::Engine;
 pub use ensemble::Ensemble;
 pub use error::AnalysisError;
+pub use error_budget::{ErrorBudget, Reference};
+pub use finite_time_bias::{BiasFit, BiasLaw, BiasRegime, FiniteTimeBias, MIN_CHECKPOINTS};
 pub use ftle::{CHAOS_THRESHOLD, ChaoticBand, ChaoticFraction, FtleDistribution, THRESHOLD_BAND};
 pub use islands::{
     ClassComparison, ClassSummary, MeanSem, TrajectoryProfile, compare_classes, trajectory_profile,
@@ -127,12 +138,14 @@ pub use lyapunov::{
     random_direction,
 };
 pub use measurement::{Measurement, dhf_product, normalised, paired_difference};
+pub use method_bias::MethodBias;
 pub use parallel::{Threads, map_chunks, map_indices};
 pub use partial::{MergeError, PartialRun, merge_partials};
+pub use planner::{MethodPilot, PlannedRun, Planner, VarianceModel};
 pub use provenance::{Provenance, TableRecord};
 pub use q_pairs::{PairClass, QPair, QPairStatistics, q_pair_statistics};
 pub use result::{LyapunovEstimate, StopReason};
-pub use rows::{CSV_HEADER, SweepRow, csv_string, sweep_rows, write_csv};
+pub use rows::{BudgetRow, CSV_HEADER, SweepRow, csv_string, sweep_rows, write_csv};
 pub use saturation::{SeparationSummary, summarize_separation};
 pub use separation::{
     LinearFit, Separation, SeparationOptions, phase_space_separation, separation_growth,
@@ -150,6 +163,7 @@ pub use trajectory::{TrajectoryStats, ftle_trajectories, trajectories_csv, traje
 pub use wall_statistics::{
     DeltaQPopulation, TransitionRule, WallStatistics, wall_statistics, wall_statistics_ensemble,
 };
+pub use work_precision::{Budget, WorkPoint, work_precision};
 
 pub use bouncing_ball::{BouncingShare, FacingFlats, FlatBand, bouncing_share, pair_rotation};
 pub use ftle_map::{FtleMap, FtleMapOptions, Slice, ftle_map};

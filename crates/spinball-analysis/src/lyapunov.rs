@@ -63,6 +63,15 @@ impl Method {
         }
     }
 
+    /// The finite-difference separation `δ0` (`None` for tangent).
+    #[must_use]
+    pub fn delta0(&self) -> Option<f64> {
+        match self {
+            Method::FiniteDifference { delta0 } => Some(*delta0),
+            Method::Tangent => None,
+        }
+    }
+
     /// Check the method's parameters.
     ///
     /// # Errors

@@ -33,6 +33,9 @@ pub enum StopReason {
     /// The stop rule's target `SEM/|mean|` was reached (deterministic for a
     /// given batch schedule).
     TargetReached,
+    /// The stop rule's target total error `√(SEM² + bias²)/|mean|` was
+    /// reached ([`StopRule::total_error`](crate::StopRule::total_error)).
+    TotalErrorReached,
     /// The stop rule's wall-time budget was spent before the target was
     /// reached (how many ICs that allows depends on the machine).
     TimeBudget,
@@ -45,12 +48,13 @@ pub enum StopReason {
 }
 
 impl StopReason {
-    /// `completed`, `target_reached`, `time_budget`, `range_exhausted` or
-    /// `cancelled`.
+    /// `completed`, `target_reached`, `total_error_reached`, `time_budget`,
+    /// `range_exhausted` or `cancelled`.
     pub fn name(&self) -> &'static str {
         match self {
             StopReason::Completed => "completed",
             StopReason::TargetReached => "target_reached",
+            StopReason::TotalErrorReached => "total_error_reached",
             StopReason::TimeBudget => "time_budget",
             StopReason::RangeExhausted => "range_exhausted",
             StopReason::Cancelled => "cancelled",

@@ -5,6 +5,7 @@ use std::io;
 
 use crate::collision_rate::rate_summary;
 use crate::error::AnalysisError;
+use crate::error_budget::ErrorBudget;
 use crate::ftle::THRESHOLD_BAND;
 use crate::measurement::dhf_product;
 use crate::result::LyapunovEstimate;
@@ -172,6 +173,7 @@ impl SweepRow {
     pub fn table_line(&self) -> String {
         let stop = match self.stop.as_str() {
             "target_reached" => "target",
+            "total_error_reached" => "total",
             "time_budget" => "budget",
             "range_exhausted" => "cap",
             "completed" => "done",
@@ -188,6 +190,84 @@ impl SweepRow {
             self.n_ics,
             self.wall_time_s,
             stop
+        )
+    }
+}
+
+/// One point's error budget as a flat record: the SEM, the finite-time and
+/// method bias estimates, the total error and why the point stopped.
+/// Serialisable with the `serde` feature.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
+pub struct BudgetRow {
+    /// Spin parameter.
+    pub alpha: f64,
+    /// Mean FTLE λ.
+    pub mean: f64,
+    /// Its standard error.
+    pub sem: f64,
+    /// Finite-time bias estimate `λ_T − λ`.
+    pub finite_time_bias: f64,
+    /// Its uncertainty.
+    pub finite_time_bias_sem: f64,
+    /// Which law the finite-time bias follows (`1/T`, `ln T / T`, `neither`).
+    pub regime: String,
+    /// Method bias `λ_fd − λ_tangent` (0 for tangent).
+    pub method_bias: f64,
+    /// Its uncertainty.
+    pub method_bias_sem: f64,
+    /// Total error.
+    pub total: f64,
+    /// Its uncertainty.
+    pub total_sem: f64,
+    /// Why the point stopped.
+    pub stop: String,
+}
+
+impl BudgetRow {
+    /// The record of `estimate` with its `budget`.
+    #[must_use]
+    pub fn new(estimate: &LyapunovEstimate, budget: &ErrorBudget) -> Self {
+        BudgetRow {
+            alpha: estimate.alpha,
+            mean: estimate.mean,
+            sem: budget.sem,
+            finite_time_bias: budget.finite_time_bias.value,
+            finite_time_bias_sem: budget.finite_time_bias.sem,
+            regime: budget.regime.name().to_string(),
+            method_bias: budget.method_bias.value,
+            method_bias_sem: budget.method_bias.sem,
+            total: budget.total.value,
+            total_sem: budget.total.sem,
+            stop: estimate.stop.name().to_string(),
+        }
+    }
+
+    /// The header of [`BudgetRow::table_line`].
+    #[must_use]
+    pub fn table_header() -> String {
+        format!(
+            "{:>7} {:>9} {:>9} {:>10} {:>9} {:>10} {:>9} {:>6} {:>19}",
+            "alpha", "lambda", "SEM", "bias_T", "law", "bias_fd", "total", "tot%", "stop"
+        )
+    }
+
+    /// A fixed-width line: α, λ, SEM, finite-time bias, its law, method
+    /// bias, total error, total in % of λ, stop reason.
+    #[must_use]
+    pub fn table_line(&self) -> String {
+        format!(
+            "{:>7.4} {:>9} {:>9} {:>10} {:>9} {:>10} {:>9} {:>6.2} {:>19}",
+            self.alpha,
+            fixed_or_sci(self.mean, 5),
+            fixed_or_sci(self.sem, 5),
+            format!("{:+.2e}", self.finite_time_bias),
+            self.regime,
+            format!("{:+.2e}", self.method_bias),
+            fixed_or_sci(self.total, 5),
+            100.0 * self.total / self.mean.abs(),
+            self.stop
         )
     }
 }
@@ -283,6 +363,19 @@ mod tests {
                 .unwrap()
                 .starts_with("\"rectangle:L=1,H=1\",0.3,fd,paper,")
         );
+    }
+
+    #[test]
+    fn budget_rows_line_up_with_their_header() {
+        let e = template().with_ics(16).with_collisions(400).run().unwrap();
+        let budget = crate::ErrorBudget::for_estimate(&template(), &e, 8);
+        // The budget reads the estimate's 400 collisions, not the template's 300.
+        assert!(budget.is_ok());
+        let row = BudgetRow::new(&e, &budget.unwrap());
+        assert_eq!(row.stop, "completed");
+        assert_eq!((row.alpha, row.mean, row.sem), (e.alpha, e.mean, e.sem));
+        assert!(row.total >= row.sem);
+        assert_eq!(row.table_line().len(), BudgetRow::table_header().len());
     }
 
     #[test]

@@ -5,7 +5,7 @@
 //! cargo run --release -p spinball-lanes --example lanes_speed -- \
 //!     [--ics 4000] [--collisions 20000] [--threads 2] [--table stadium:a=1] \
 //!     [--alpha 0.5] [--isa all|avx512|avx2|baseline] [--kernel all|plain|fd|tangent|spectrum] \
-//!     [--repeat 1] [--scalar]
+//!     [--repeat 1] [--scalar] [--qr-interval 1]
 //! ```
 //!
 //! The defaults are the issue's benchmark: stadium `a = 1`, α = 0.5, 4000
@@ -20,7 +20,9 @@
 //! median over `--repeat` runs of the wall time per initial condition and
 //! collision (the whole run: all threads together) and of the CPU time per
 //! IC-step (summed over threads: the cost per core, which stays meaningful
-//! when other processes share the machine; Linux only).
+//! when other processes share the machine; Linux only). `--qr-interval k`
+//! runs the lane spectrum kernel with Gram–Schmidt every `k` collisions
+//! (the scalar reference keeps one per collision).
 
 use std::time::Instant;
 
@@ -100,6 +102,7 @@ struct Args {
     kernels: Vec<String>,
     repeat: usize,
     scalar: bool,
+    qr_interval: u32,
 }
 
 fn parse() -> Result<Args, Box<dyn std::error::Error>> {
@@ -115,6 +118,7 @@ fn parse() -> Result<Args, Box<dyn std::error::Error>> {
             .to_vec(),
         repeat: 1,
         scalar: false,
+        qr_interval: 1,
     };
     let mut it = std::env::args().skip(1);
     while let Some(flag) = it.next() {
@@ -130,6 +134,7 @@ fn parse() -> Result<Args, Box<dyn std::error::Error>> {
             "--table" => a.table = value,
             "--alpha" => a.alpha = value.parse()?,
             "--repeat" => a.repeat = value.parse()?,
+            "--qr-interval" => a.qr_interval = value.parse()?,
             "--isa" if value != "all" => a.isas = vec![value.parse::<Isa>()?.checked()?],
             "--isa" => {}
             "--kernel" if value != "all" => a.kernels = vec![value],
@@ -240,7 +245,7 @@ fn bench<B: Boundary + Clone + Sync>(a: &Args, table: &B) -> Outcome {
                     }
                     "spectrum" => {
                         lanes
-                            .spectrum(&starts, &frames, a.collisions, 1)?
+                            .spectrum(&starts, &frames, a.collisions, a.qr_interval)?
                             .iter()
                             .map(|s| s.exponents()[0])
                             .sum::<f64>()

@@ -95,6 +95,7 @@ mod style;
 mod sweep_json;
 mod table_i;
 mod table_plot;
+mod work_plots;
 
 pub mod cli;
 
@@ -127,6 +128,9 @@ pub use table_i::{
     table_i_plot, table_i_reference,
 };
 pub use table_plot::TablePlot;
+pub use work_plots::{
+    WORK_COLUMNS, bias_vs_t, error_vs_time, method_label, sem_vs_n, time_to_target, work_rows,
+};
 
 pub use plotters;
 pub use plotters::style::RGBColor;

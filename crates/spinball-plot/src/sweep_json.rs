@@ -11,7 +11,9 @@
 //!  "points": [{"alpha": 0.5, "mean": 0.18, "sem": 0.002, "median": 0.2,
 //!              "chaotic_fraction": 0.9, "n_ics": 1000, "n_collisions": 10000,
 //!              "wall_time_s": 1.1, "std": 0.05, "conditional_mean": 0.2,
-//!              "collision_rate": 1.2}]}
+//!              "collision_rate": 1.2, "stop": "completed",
+//!              "error_budget": {"sem": 0.002, "finite_time_bias": 1e-4, "regime": "1/T",
+//!                               "method_bias": 2e-5, "total": 0.0021, ...}}]}
 //! ```
 //!
 //! `n_collisions` is the number of collisions per initial condition,
@@ -20,7 +22,7 @@
 use std::path::{Path, PathBuf};
 
 use serde::Serialize;
-use spinball_analysis::{CHAOS_THRESHOLD, LyapunovEstimate, Method};
+use spinball_analysis::{BudgetRow, CHAOS_THRESHOLD, LyapunovEstimate, Method};
 
 use crate::cli::SweepArgs;
 use crate::error::PlotError;
@@ -50,6 +52,12 @@ pub struct SweepPoint {
     pub conditional_mean: Option<f64>,
     /// Collisions per unit time over the ensemble.
     pub collision_rate: f64,
+    /// Why the point stopped.
+    pub stop: String,
+    /// The point's error budget (SEM, finite-time and method bias, total),
+    /// if it was measured.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error_budget: Option<BudgetRow>,
 }
 
 impl From<&LyapunovEstimate> for SweepPoint {
@@ -66,6 +74,8 @@ impl From<&LyapunovEstimate> for SweepPoint {
             std: e.std,
             conditional_mean: e.conditional_mean,
             collision_rate: e.collision_rate,
+            stop: e.stop.name().to_string(),
+            error_budget: None,
         }
     }
 }
@@ -124,6 +134,23 @@ impl SweepDocument {
     /// [`PlotError::Io`] if the file cannot be written.
     pub fn push(&mut self, estimate: &LyapunovEstimate) -> Result<(), PlotError> {
         self.points.push(SweepPoint::from(estimate));
+        self.write()
+    }
+
+    /// Add the point of `estimate` with its error budget and rewrite the
+    /// file.
+    ///
+    /// # Errors
+    /// [`PlotError::Io`] if the file cannot be written.
+    pub fn push_with_budget(
+        &mut self,
+        estimate: &LyapunovEstimate,
+        budget: BudgetRow,
+    ) -> Result<(), PlotError> {
+        self.points.push(SweepPoint {
+            error_budget: Some(budget),
+            ..SweepPoint::from(estimate)
+        });
         self.write()
     }
 

@@ -9,7 +9,7 @@ use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use spinball_analysis::AnalysisError;
+use spinball_analysis::{AnalysisError, collision_log};
 use spinball_core::{Billiard, Sampler, SpinLaw, State};
 use spinball_geometry::{Boundary, DVec2};
 
@@ -136,7 +136,6 @@ impl PyBilliard {
 }
 
 /// One column per quantity of a trajectory.
-#[derive(Default)]
 struct Columns {
     time: Vec<f64>,
     x: Vec<f64>,
@@ -150,48 +149,27 @@ struct Columns {
     q: Vec<f64>,
 }
 
-/// Step a ball from `start` for `n` collisions, keeping every collision.
+/// Step a ball from `start` for `n` collisions, keeping every collision
+/// ([`collision_log`], whose columns these are).
 fn follow<B: Boundary>(billiard: &Billiard<B>, start: State, n: u64) -> PyResult<Columns> {
-    let mut ball = billiard
-        .launch(start)
-        .map_err(|e| value_error(format!("initial state: {e}")))?;
-    let cap = usize::try_from(n).unwrap_or(usize::MAX).min(1 << 24);
-    let mut c = Columns::default();
-    for col in [
-        &mut c.time,
-        &mut c.x,
-        &mut c.y,
-        &mut c.vx,
-        &mut c.vy,
-        &mut c.u,
-        &mut c.s,
-        &mut c.v_par,
-        &mut c.q,
-    ] {
-        col.reserve(cap);
-    }
-    c.wall.reserve(cap);
-    let mut t = 0.0;
-    for k in 0..n {
-        let hit = billiard.step(&mut ball).map_err(|e| {
-            PyRuntimeError::new_err(
-                AnalysisError::from(e).to_string() + &format!(" (collision {k})"),
-            )
-        })?;
-        t += hit.time();
-        let s = ball.state();
-        c.time.push(t);
-        c.x.push(s.position.x);
-        c.y.push(s.position.y);
-        c.vx.push(s.velocity.x);
-        c.vy.push(s.velocity.y);
-        c.u.push(s.spin);
-        c.wall.push(i64::from(hit.wall()));
-        c.s.push(hit.hit.s());
-        c.v_par.push(hit.v_par_before);
-        c.q.push(hit.q);
-    }
-    Ok(c)
+    let log = collision_log(billiard, start, n).map_err(|e| match e {
+        AnalysisError::Launch { source, .. } => value_error(format!("initial state: {source}")),
+        other => PyRuntimeError::new_err(other.to_string()),
+    })?;
+    let [time, x, y, vx, vy, u, wall, s, v_par, q] = std::array::from_fn(|k| log.column(k));
+    Ok(Columns {
+        time,
+        x,
+        y,
+        vx,
+        vy,
+        u,
+        // Wall indices are small integers, stored exactly in the f64 row.
+        wall: wall.into_iter().map(|w| w as i64).collect(),
+        s,
+        v_par,
+        q,
+    })
 }
 
 impl Columns {
