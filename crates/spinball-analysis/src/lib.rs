@@ -101,6 +101,13 @@ pub mod trajectory;
 pub mod wall_statistics;
 pub mod work_precision;
 
+// Phase space: sections, FTLE maps, the bouncing-ball island, return times.
+pub mod bouncing_ball;
+pub mod ftle_map;
+pub mod invariant_measure;
+pub mod return_time;
+pub mod section;
+
 pub use alpha_sweep::{AlphaSweep, SweepEvent, linspace};
 pub use collision_log::{COLLISION_COLUMNS, CollisionLog, collision_log};
 pub use collision_rate::{
@@ -157,3 +164,11 @@ pub use wall_statistics::{
     DeltaQPopulation, TransitionRule, WallStatistics, wall_statistics, wall_statistics_ensemble,
 };
 pub use work_precision::{Budget, WorkPoint, work_precision};
+
+pub use bouncing_ball::{BouncingShare, FacingFlats, FlatBand, bouncing_share, pair_rotation};
+pub use ftle_map::{FtleMap, FtleMapOptions, Slice, ftle_map};
+pub use invariant_measure::{InvariantMeasure, SectionBox};
+pub use return_time::{
+    KacComparison, OrbitReturns, invariant_start, kac_comparison, orbit_returns,
+};
+pub use section::{Section, SectionPoint, section_points, sections, state_on_section};

@@ -193,6 +193,19 @@ pub trait Boundary {
         }
     }
 
+    /// The wall contact at Birkhoff arc length `s` (taken modulo the
+    /// perimeter): point, inward normal, curvature, wall id and `s`, with
+    /// flight time 0. The inverse of [`Hit::s`]: what a phase-space section
+    /// needs to put a ball at given Birkhoff coordinates.
+    ///
+    /// Default: `None` (the table cannot say). Every built-in table and
+    /// [`SegmentTable`](crate::SegmentTable) give it in closed form, and
+    /// return `None` only for a non-finite `s`.
+    fn hit_at(&self, s: f64) -> Option<Hit> {
+        let _ = s;
+        None
+    }
+
     /// The Birkhoff coordinates `(s, v∥)` of a hit for a ball arriving with
     /// `velocity` (paper §II.B): arc length and tangential velocity.
     fn birkhoff(&self, hit: &Hit, velocity: DVec2) -> (f64, f64) {
@@ -242,6 +255,9 @@ impl<B: Boundary> Boundary for &B {
     }
     fn birkhoff(&self, hit: &Hit, velocity: DVec2) -> (f64, f64) {
         (**self).birkhoff(hit, velocity)
+    }
+    fn hit_at(&self, s: f64) -> Option<Hit> {
+        (**self).hit_at(s)
     }
 }
 

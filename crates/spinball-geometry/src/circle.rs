@@ -83,6 +83,18 @@ impl Boundary for Circle {
     fn perimeter(&self) -> f64 {
         TAU * self.radius
     }
+    fn hit_at(&self, s: f64) -> Option<Hit> {
+        let s = crate::hit::wrap_arc_length(s, self.perimeter())?;
+        let radial = DVec2::from_angle(s / self.radius);
+        Some(Hit::new(
+            0.0,
+            radial * self.radius,
+            -radial,
+            -1.0 / self.radius,
+            0,
+            s,
+        ))
+    }
     fn area(&self) -> f64 {
         0.5 * TAU * self.radius * self.radius
     }

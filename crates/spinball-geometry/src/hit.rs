@@ -161,3 +161,15 @@ impl Hit {
 pub fn tangent_of(normal: DVec2) -> DVec2 {
     DVec2::new(normal.y, -normal.x)
 }
+
+/// `s` taken into `[0, perimeter)` (`None` for a non-finite `s` or a
+/// perimeter that is not positive and finite).
+#[inline]
+pub(crate) fn wrap_arc_length(s: f64, perimeter: f64) -> Option<f64> {
+    if !(s.is_finite() && perimeter.is_finite() && perimeter > 0.0) {
+        return None;
+    }
+    let w = s.rem_euclid(perimeter);
+    // rem_euclid of a tiny negative s rounds up to the perimeter itself.
+    Some(if w >= perimeter { 0.0 } else { w })
+}

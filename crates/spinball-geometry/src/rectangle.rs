@@ -133,6 +133,24 @@ pub(crate) fn land_box(
     Some(box_hit(l, h, time, p, wall))
 }
 
+/// The hit on the box `[-l, l] × [-h, h]` at arc length `s` (flight time 0).
+/// Shared with [`Sinai`](crate::Sinai).
+pub(crate) fn box_hit_at(l: f64, h: f64, s: f64) -> Hit {
+    let (p, wall) = if s < 2.0 * l {
+        (DVec2::new(s - l, -h), 0)
+    } else if s < 2.0 * (l + h) {
+        (DVec2::new(l, s - 2.0 * l - h), 1)
+    } else if s < 4.0 * l + 2.0 * h {
+        (DVec2::new(l - (s - 2.0 * l - 2.0 * h), h), 2)
+    } else {
+        (DVec2::new(-l, h - (s - 4.0 * l - 2.0 * h)), 3)
+    };
+    let mut hit = box_hit(l, h, 0.0, p, wall);
+    // Keep the exact s asked for (the snapped point recomputes it to rounding).
+    hit.arc = crate::hit::ArcLength::Known(s);
+    hit
+}
+
 /// Snap a contact onto box wall `wall` and fill in normal and arc length.
 #[inline]
 fn box_hit(l: f64, h: f64, time: f64, p: DVec2, wall: WallId) -> Hit {
@@ -173,6 +191,10 @@ impl Boundary for Rectangle {
 
     fn perimeter(&self) -> f64 {
         4.0 * (self.l + self.h)
+    }
+    fn hit_at(&self, s: f64) -> Option<Hit> {
+        let s = crate::hit::wrap_arc_length(s, self.perimeter())?;
+        Some(box_hit_at(self.l, self.h, s))
     }
     /// `min(l, h)`: the thin side (1 for the paper's squares and 1.5 × 1 box).
     fn unit_length(&self) -> f64 {

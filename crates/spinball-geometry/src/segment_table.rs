@@ -391,6 +391,34 @@ impl Boundary for SegmentTable {
         self.perimeter
     }
 
+    fn hit_at(&self, s: f64) -> Option<Hit> {
+        let s = crate::hit::wrap_arc_length(s, self.perimeter)?;
+        // The last wall whose base is at or below s.
+        let i = self.bases.partition_point(|&b| b <= s).saturating_sub(1);
+        let along = s - self.bases[i];
+        let wall = i as WallId;
+        Some(match self.walls[i] {
+            Segment::Line(l) => {
+                let t = (along / l.length()).clamp(0.0, 1.0);
+                let point = l.start() + (l.end() - l.start()) * t;
+                Hit::new(0.0, point, l.normal(), 0.0, wall, s)
+            }
+            Segment::Arc(a) => {
+                let turn = (along / a.radius()).min(a.sweep().abs()) * a.sweep().signum();
+                let radial = DVec2::from_angle(a.start_angle() + turn);
+                let normal = if a.is_concave() { -radial } else { radial };
+                Hit::new(
+                    0.0,
+                    a.center() + radial * a.radius(),
+                    normal,
+                    a.curvature(),
+                    wall,
+                    s,
+                )
+            }
+        })
+    }
+
     /// Exact: Green's theorem over every loop (holes count negative).
     fn area(&self) -> f64 {
         0.5 * self

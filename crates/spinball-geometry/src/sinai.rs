@@ -136,6 +136,15 @@ impl Boundary for Sinai {
     fn perimeter(&self) -> f64 {
         8.0 * self.l + TAU * self.r
     }
+    fn hit_at(&self, s: f64) -> Option<Hit> {
+        let s = crate::hit::wrap_arc_length(s, self.perimeter())?;
+        if s < 8.0 * self.l {
+            return Some(crate::rectangle::box_hit_at(self.l, self.l, s));
+        }
+        // Clockwise from (r, 0).
+        let radial = DVec2::from_angle(-(s - 8.0 * self.l) / self.r);
+        Some(Hit::new(0.0, radial * self.r, radial, 1.0 / self.r, 4, s))
+    }
     /// `4L² − πR²`.
     fn area(&self) -> f64 {
         4.0 * self.l * self.l - 0.5 * TAU * self.r * self.r

@@ -126,6 +126,24 @@ impl Boundary for Stadium {
     fn perimeter(&self) -> f64 {
         4.0 * self.a + 2.0 * PI
     }
+    fn hit_at(&self, s: f64) -> Option<Hit> {
+        let a = self.a;
+        let s = crate::hit::wrap_arc_length(s, self.perimeter())?;
+        let cap = |center: DVec2, angle: f64, wall| {
+            let radial = DVec2::from_angle(angle);
+            Hit::new(0.0, center + radial, -radial, -1.0, wall, s)
+        };
+        Some(if s < 2.0 * a {
+            Hit::new(0.0, DVec2::new(s - a, -1.0), DVec2::Y, 0.0, 0, s)
+        } else if s < 2.0 * a + PI {
+            cap(DVec2::new(a, 0.0), s - 2.0 * a - 0.5 * PI, 1)
+        } else if s < 4.0 * a + PI {
+            let x = a - (s - 2.0 * a - PI);
+            Hit::new(0.0, DVec2::new(x, 1.0), DVec2::NEG_Y, 0.0, 2, s)
+        } else {
+            cap(DVec2::new(-a, 0.0), s - 4.0 * a - 0.5 * PI, 3)
+        })
+    }
     /// `4a + π` (unit caps).
     fn area(&self) -> f64 {
         4.0 * self.a + PI

@@ -157,6 +157,14 @@ impl Boundary for Table {
             Table::Sinai(t) => t.shape(),
         }
     }
+    fn hit_at(&self, s: f64) -> Option<Hit> {
+        match self {
+            Table::Circle(t) => t.hit_at(s),
+            Table::Rectangle(t) => t.hit_at(s),
+            Table::Stadium(t) => t.hit_at(s),
+            Table::Sinai(t) => t.hit_at(s),
+        }
+    }
 }
 
 /// Why a table description string could not be read.
@@ -332,6 +340,12 @@ impl Boundary for Built {
         match self {
             Built::Table(t) => t.shape(),
             Built::Segments(t) => t.shape(),
+        }
+    }
+    fn hit_at(&self, s: f64) -> Option<Hit> {
+        match self {
+            Built::Table(t) => t.hit_at(s),
+            Built::Segments(t) => t.hit_at(s),
         }
     }
     fn length_scale(&self) -> f64 {

@@ -9,6 +9,7 @@ use crate::font;
 use crate::format::format_tick;
 use crate::histogram::Histogram;
 use crate::lines::LinePlot;
+use crate::phase_plot::{MapPlot, Scatter3d};
 use crate::plot::{Plot, titled};
 use crate::style::Style;
 use crate::table_plot::TablePlot;
@@ -24,6 +25,10 @@ pub enum Panel {
     Histogram(Histogram),
     /// A nested grid.
     Grid(Grid),
+    /// A map of values over a plane.
+    Map(MapPlot),
+    /// A 3-D scatter.
+    Scatter3d(Scatter3d),
     /// An empty cell.
     Empty,
 }
@@ -48,6 +53,16 @@ impl From<Grid> for Panel {
         Panel::Grid(p)
     }
 }
+impl From<MapPlot> for Panel {
+    fn from(p: MapPlot) -> Self {
+        Panel::Map(p)
+    }
+}
+impl From<Scatter3d> for Panel {
+    fn from(p: Scatter3d) -> Self {
+        Panel::Scatter3d(p)
+    }
+}
 
 impl Plot for Panel {
     fn validate(&self) -> Result<(), PlotError> {
@@ -56,6 +71,8 @@ impl Plot for Panel {
             Panel::Lines(p) => p.validate(),
             Panel::Histogram(p) => p.validate(),
             Panel::Grid(p) => p.validate(),
+            Panel::Map(p) => p.validate(),
+            Panel::Scatter3d(p) => p.validate(),
             Panel::Empty => Ok(()),
         }
     }
@@ -69,6 +86,8 @@ impl Plot for Panel {
             Panel::Lines(p) => p.draw(area, style),
             Panel::Histogram(p) => p.draw(area, style),
             Panel::Grid(p) => p.draw(area, style),
+            Panel::Map(p) => p.draw(area, style),
+            Panel::Scatter3d(p) => p.draw(area, style),
             Panel::Empty => Ok(()),
         }
     }

@@ -10,6 +10,9 @@
 //!   energy traces, convergence traces);
 //! - [`Histogram`]: a histogram with vertical [`Marker`] lines (mean, median,
 //!   conditional mean) and a legend;
+//! - [`MapPlot`] and [`Scatter3d`]: phase space, a value per grid cell (an
+//!   FTLE map) or per point (a section coloured by spin) with outlined
+//!   regions, and a 3-D cloud of section points;
 //! - [`Grid`]: panels side by side (for example 4 tables × 4 values of α),
 //!   with an optional shared [`Colorbar`].
 //!
@@ -79,6 +82,7 @@ mod histogram;
 mod lines;
 mod measured;
 mod outline;
+mod phase_plot;
 mod plan;
 mod plot;
 mod progress;
@@ -106,6 +110,7 @@ pub use histogram::{Histogram, Marker};
 pub use lines::{Legend, LineKind, LinePlot, Series};
 pub use measured::{ALPHA_LABEL, LAMBDA_LABEL, measured, measured_band, paper_markers, scaled};
 pub use outline::{ARC_POINTS_PER_TURN, Loop, Outline, ToOutline};
+pub use phase_plot::{MapPlot, Scatter3d};
 pub use plan::{Plan, unit_grid};
 pub use plot::{Plot, render_png};
 pub use progress::Progress;

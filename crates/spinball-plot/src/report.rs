@@ -26,6 +26,7 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use npyz::WriterBuilder;
 use serde::Serialize;
 use spinball_analysis::{SweepRow, write_csv};
 
@@ -151,6 +152,33 @@ impl Report {
         write_csv(&mut text, rows).map_err(|source| io(Path::new(file), source))?;
         let path = self.path(file)?;
         std::fs::write(&path, text).map_err(|source| io(&path, source))?;
+        Ok(path)
+    }
+
+    /// Write `values` (row-major, of `shape`) to `file` as a float64 NPY
+    /// array, for `numpy.load`.
+    ///
+    /// # Errors
+    /// [`PlotError::Invalid`] if the shape does not hold `values.len()`
+    /// numbers, [`PlotError::Io`].
+    pub fn npy(&mut self, file: &str, shape: &[u64], values: &[f64]) -> Result<PathBuf, PlotError> {
+        if shape.iter().product::<u64>() != values.len() as u64 {
+            return Err(PlotError::Invalid {
+                what: "NPY shape",
+                why: format!("{shape:?} does not hold {} values", values.len()),
+            });
+        }
+        let path = self.path(file)?;
+        let fail = |source| io(&path, source);
+        let out = std::io::BufWriter::new(std::fs::File::create(&path).map_err(fail)?);
+        let mut w = npyz::WriteOptions::new()
+            .default_dtype()
+            .shape(shape)
+            .writer(out)
+            .begin_nd()
+            .map_err(fail)?;
+        w.extend(values.iter().copied()).map_err(fail)?;
+        w.finish().map_err(fail)?;
         Ok(path)
     }
 

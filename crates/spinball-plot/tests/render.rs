@@ -282,3 +282,52 @@ fn trajectory_is_coloured_by_the_colormap_ends() {
     assert!(has(viridis(0.0)), "dark start colour drawn");
     assert!(has(viridis(1.0)), "light end colour drawn");
 }
+
+#[test]
+fn phase_space_plots_draw_and_refuse_bad_data() {
+    use spinball_plot::{MapPlot, Scatter3d};
+    let dir = temp_dir("phase");
+    let cells: Vec<Option<f64>> = (0..12)
+        .map(|k| (k != 5).then_some(k as f64 / 12.0))
+        .collect();
+    let mask: Vec<bool> = (0..12).map(|k| k % 4 == 1).collect();
+    let map = MapPlot::new((0.0, 4.0), (-1.0, 1.0), (0.0, 1.0))
+        .cells(4, 3, cells.clone())
+        .outline(mask)
+        .points(vec![(1.0, 0.5, 0.3), (f64::NAN, 0.0, 0.1)])
+        .labels("s", "sin θ")
+        .title("map");
+    let path = dir.join("map.png");
+    map.save_png(&path, 600, 400).unwrap();
+    assert_eq!(png_size(&path), (600, 400));
+    let cloud = Scatter3d::new(
+        vec![([0.5, 0.0, 0.1], 0.2), ([1.0, 0.5, -0.2], 0.9)],
+        [(0.0, 1.0), (-1.0, 1.0), (-1.0, 1.0)],
+        (0.0, 1.0),
+    )
+    .labels("s", "sin θ", "u");
+    let path = dir.join("cloud.png");
+    cloud.save_png(&path, 500, 500).unwrap();
+    assert_eq!(png_size(&path), (500, 500));
+    // Wrong lengths, ranges and empty data are errors, and nothing is written.
+    let short = MapPlot::new((0.0, 4.0), (-1.0, 1.0), (0.0, 1.0)).cells(4, 4, cells.clone());
+    assert!(matches!(
+        short.validate(),
+        Err(PlotError::LengthMismatch { .. })
+    ));
+    let mask = MapPlot::new((0.0, 4.0), (-1.0, 1.0), (0.0, 1.0))
+        .cells(4, 3, cells)
+        .outline(vec![true; 3]);
+    assert!(matches!(
+        mask.validate(),
+        Err(PlotError::LengthMismatch { .. })
+    ));
+    let flat = MapPlot::new((0.0, 4.0), (1.0, 1.0), (0.0, 1.0)).points(vec![(1.0, 1.0, 0.5)]);
+    assert!(matches!(flat.validate(), Err(PlotError::Invalid { .. })));
+    let empty = MapPlot::new((0.0, 4.0), (-1.0, 1.0), (0.0, 1.0)).cells(1, 1, vec![None]);
+    assert!(matches!(empty.validate(), Err(PlotError::EmptyData(_))));
+    assert!(empty.save_png(dir.join("empty.png"), 300, 300).is_err());
+    assert!(!dir.join("empty.png").exists());
+    let nothing = Scatter3d::new(vec![], [(0.0, 1.0); 3], (0.0, 1.0));
+    assert!(nothing.validate().is_err());
+}

@@ -1,0 +1,268 @@
+//! The bouncing-ball island of the spinning stadium, explained: between the
+//! two flat walls a pair of collisions is a rotation by `4·arctan √α`.
+//!
+//! # Derivation
+//! Carry the spin as `w = √α u`. A collision at a wall with unit tangent
+//! `t̂` is the half-turn `V' = 2(V·a)a − V` of `V = (v, w)` about
+//! `a = (t̂, −√α)/√(1+α)` (docs/PHYSICS.md). On the stadium's flats
+//! `y = ±1` the tangents are `t̂ = (1, 0)` (bottom, inward normal `+ŷ`) and
+//! `(−1, 0)` (top), so `v_y` only changes sign and the pair `(v_x, w)` is
+//! mapped by `x ↦ 2(x·â)â − x` with `â ∝ (t̂_x, −√α)`: the **reflection** of
+//! the `(v_x, w)` plane in the line along `â`. That line makes the angle
+//! `−ψ` with the `v_x` axis on the bottom wall and `+ψ` on the top wall,
+//! `ψ = arctan √α`. Two reflections in lines at angle `2ψ` to each other
+//! compose to a rotation by twice that angle, so a bottom–top pair of
+//! collisions rotates `(v_x, w)` by
+//!
+//! ```text
+//!     Θ = 4 arctan √α        (bottom then top: by +Θ; top then bottom: by −Θ)
+//! ```
+//!
+//! keeping `R = √(v_x² + w²)` and `|v_y| = √(2E − R²)`. Unfolding the
+//! reflections (`cos` is even), the `v_x` of the k-th flight after the first
+//! flat hit is `R cos(σφ − kΔ)` with `Δ = Θ/2 = 2ψ`, `φ = atan2(w, v_x)`
+//! before that hit and `σ = sign v_y`. Each flight between the flats lasts
+//! `2/|v_y|`, and the sum of the cosines telescopes
+//! (`Σ_{k<n} cos(θ − kΔ) = [sin(θ + Δ/2) − sin(θ + Δ/2 − nΔ)]/(2 sin(Δ/2))`),
+//! so the contact points on the flats are
+//!
+//! ```text
+//!     x_n = c − A sin(θ₀ − nΔ),   A = R / (|v_y| sin(Δ/2)) = R √((1+α)/α) / |v_y|
+//! ```
+//!
+//! with `θ₀ = σφ − Δ/2` and the centre `c` fixed by the first hit. The
+//! contact points stay in the band `[c − A, c + A]`, and fill it densely
+//! when `Δ/2π` is irrational. A ball stays between the flats for ever if and
+//! only if every contact lies on a flat, `|x_n| ≤ a`: the band must fit,
+//! `|c| + A ≤ a` (exact for irrational `Δ/2π`; for rational ones a
+//! sufficient condition). A contact past `|x| = a` lies outside the cap's
+//! circle, so the flight there meets the cap first: the ball escapes.
+//!
+//! At α = 0 (`Δ = 0`) the band is infinite unless `v_x = 0`: only the
+//! measure-zero bouncing-ball family of the specular stadium stays. With
+//! spin, `A` is finite, so a positive-measure set of starts near the
+//! bouncing-ball orbits (small `R = |(v_x, √α u)|`) is trapped: the
+//! bouncing-ball island.
+
+use std::f64::consts::PI;
+
+use spinball_core::{Sampler, SpinLaw, State};
+use spinball_geometry::{DVec2, Stadium};
+
+use crate::trajectory::TrajectoryStats;
+
+/// The rotation of `(v_x, √α u)` by a bottom–top pair of collisions on two
+/// facing flat walls: `4·arctan √α` (see the [module docs](self)).
+#[must_use]
+pub fn pair_rotation(alpha: f64) -> f64 {
+    4.0 * alpha.sqrt().atan()
+}
+
+/// The band of x the flat-wall contacts of a bouncing ball sweep.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct FlatBand {
+    /// Centre `c` of the band.
+    pub center: f64,
+    /// Half-width `A` of the band.
+    pub amplitude: f64,
+    /// Phase `θ₀` of the first contact.
+    pub phase: f64,
+    /// Phase step `Δ = 2 arctan √α` per flight.
+    pub step: f64,
+}
+
+impl FlatBand {
+    /// The x of contact `n` on the flats (`n = 0`: the first),
+    /// `c − A sin(θ₀ − nΔ)`, while the ball stays between them.
+    #[must_use]
+    pub fn contact(&self, n: u64) -> f64 {
+        self.center - self.amplitude * (self.phase - n as f64 * self.step).sin()
+    }
+    /// Whether the band fits on flats of half-length `a`.
+    #[must_use]
+    pub fn fits(&self, a: f64) -> bool {
+        self.center.abs() + self.amplitude <= a
+    }
+    /// How far inside (positive) or outside (negative) the flats the band
+    /// ends: `a − |c| − A`.
+    #[must_use]
+    pub fn margin(&self, a: f64) -> f64 {
+        a - self.center.abs() - self.amplitude
+    }
+}
+
+/// The two facing flat walls `y = ±1`, `|x| ≤ a` of a stadium with unit
+/// caps, and the predictions of the rotation there.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct FacingFlats {
+    a: f64,
+}
+
+impl FacingFlats {
+    /// The flats of `stadium`.
+    #[must_use]
+    pub fn of(stadium: &Stadium) -> Self {
+        FacingFlats { a: stadium.a() }
+    }
+
+    /// Half-length `a` of the flats.
+    #[must_use]
+    pub fn a(&self) -> f64 {
+        self.a
+    }
+
+    /// The band of the contacts of a ball in `state` under `law`, if the
+    /// ball is in the strip between the flats (`|x| ≤ a`, `|y| ≤ 1`),
+    /// moves across it (`v_y ≠ 0`), and the band is bounded (α > 0, or
+    /// `v_x = 0` at α = 0). The first contact counts.
+    #[must_use]
+    pub fn band(&self, law: &SpinLaw, state: &State) -> Option<FlatBand> {
+        let (p, v) = (state.position, state.velocity);
+        if p.x.abs() > self.a || p.y.abs() > 1.0 || v.y == 0.0 {
+            return None;
+        }
+        let sigma = v.y.signum();
+        let x1 = p.x + v.x * (sigma - p.y) / v.y;
+        let alpha = law.alpha();
+        if alpha == 0.0 {
+            return (v.x == 0.0).then_some(FlatBand {
+                center: x1,
+                amplitude: 0.0,
+                phase: 0.0,
+                step: 0.0,
+            });
+        }
+        let w = alpha.sqrt() * state.spin;
+        let r = v.x.hypot(w);
+        let half = alpha.sqrt().atan(); // Δ/2 = ψ
+        let theta0 = sigma * w.atan2(v.x) - half;
+        let amplitude = r / (v.y.abs() * half.sin());
+        Some(FlatBand {
+            center: x1 + amplitude * theta0.sin(),
+            amplitude,
+            phase: theta0,
+            step: 2.0 * half,
+        })
+    }
+
+    /// Whether a ball in `state` stays between the flats for ever (its band
+    /// fits; see the [module docs](self) for when this is exact).
+    #[must_use]
+    pub fn trapped(&self, law: &SpinLaw, state: &State) -> bool {
+        self.band(law, state).is_some_and(|b| b.fits(self.a))
+    }
+
+    /// [`trapped`](Self::trapped) for a ball leaving the wall at arc length
+    /// `s` with tangential velocity `v_par` and spin `spin` on the shell
+    /// `|V| = 1` (the coordinates of an FTLE map); `false` off the flats or
+    /// off the shell.
+    #[must_use]
+    pub fn trapped_at(&self, law: &SpinLaw, s: f64, v_par: f64, spin: f64) -> bool {
+        let a = self.a;
+        let rest = 1.0 - v_par * v_par - law.alpha() * spin * spin;
+        if rest <= 0.0 {
+            return false;
+        }
+        let (x, y, t) = if (0.0..=2.0 * a).contains(&s) {
+            (s - a, -1.0, 1.0)
+        } else if (2.0 * a + PI..=4.0 * a + PI).contains(&s) {
+            (a - (s - 2.0 * a - PI), 1.0, -1.0)
+        } else {
+            return false;
+        };
+        // Tangent (t, 0), inward normal (0, −y).
+        let velocity = DVec2::new(t * v_par, -y * rest.sqrt());
+        self.trapped(law, &State::new(DVec2::new(x, y), velocity, spin))
+    }
+}
+
+/// How many of an ensemble's regular orbits the rotation explains.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct BouncingShare {
+    /// FTLE at or below which an orbit counts as regular.
+    pub threshold: f64,
+    /// Regular orbits.
+    pub regular: u64,
+    /// Regular orbits whose start the rotation predicts trapped.
+    pub regular_trapped: u64,
+    /// Chaotic orbits whose start the rotation predicts trapped (0 if the
+    /// prediction is right and the run long enough).
+    pub chaotic_trapped: u64,
+    /// Orbits.
+    pub total: u64,
+}
+
+impl BouncingShare {
+    /// Share of the regular orbits that are predicted bouncing balls
+    /// (`None` without regular orbits).
+    #[must_use]
+    pub fn share(&self) -> Option<f64> {
+        (self.regular > 0).then(|| self.regular_trapped as f64 / self.regular as f64)
+    }
+}
+
+/// Which of an ensemble's orbits (`trajectories`, started by `sampler` from
+/// `ic_rng(seed, index)` on `stadium` under `law`, as
+/// [`Ensemble`](crate::Ensemble) draws them) are regular, and which of
+/// those the rotation predicts trapped between the flats.
+#[must_use]
+pub fn bouncing_share(
+    stadium: &Stadium,
+    law: &SpinLaw,
+    sampler: Sampler,
+    seed: u64,
+    trajectories: &[TrajectoryStats],
+    threshold: f64,
+) -> BouncingShare {
+    let flats = FacingFlats::of(stadium);
+    let mut share = BouncingShare {
+        threshold,
+        regular: 0,
+        regular_trapped: 0,
+        chaotic_trapped: 0,
+        total: trajectories.len() as u64,
+    };
+    for t in trajectories {
+        let start = sampler.initial_state(stadium, law, seed, t.index);
+        let trapped = u64::from(flats.trapped(law, &start));
+        if t.exponent <= threshold {
+            share.regular += 1;
+            share.regular_trapped += trapped;
+        } else {
+            share.chaotic_trapped += trapped;
+        }
+    }
+    share
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rotation_limits() {
+        assert_eq!(pair_rotation(0.0), 0.0);
+        assert!((pair_rotation(1.0) - PI).abs() < 1e-15);
+        assert!((pair_rotation(1.0 / 3.0) - 2.0 * PI / 3.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn bands_need_the_strip_and_spin() {
+        let flats = FacingFlats::of(&Stadium::new(1.0).unwrap());
+        let law = SpinLaw::new(0.5).unwrap();
+        let inside = State::new(DVec2::ZERO, DVec2::new(0.05, 0.9), 0.1);
+        assert!(flats.trapped(&law, &inside));
+        let in_cap = State::new(DVec2::new(1.5, 0.0), DVec2::new(0.05, 0.9), 0.1);
+        assert!(flats.band(&law, &in_cap).is_none());
+        let level = State::new(DVec2::ZERO, DVec2::new(1.0, 0.0), 0.0);
+        assert!(flats.band(&law, &level).is_none());
+        let specular = SpinLaw::specular();
+        assert!(flats.band(&specular, &inside).is_none());
+        let vertical = State::new(DVec2::ZERO, DVec2::new(0.0, 1.0), 0.0);
+        assert!(flats.trapped(&specular, &vertical));
+        assert!(!flats.trapped_at(&law, 3.0, 0.0, 0.0)); // on a cap
+    }
+}
