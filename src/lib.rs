@@ -61,10 +61,10 @@ pub use spinball_geometry as geometry;
 /// The names most programs need: `use spinball::prelude::*;`.
 pub mod prelude {
     pub use spinball_analysis::{
-        AlphaSweep, AnalysisError, Control, Engine, Ensemble, FtleDistribution, Lyapunov,
-        LyapunovEstimate, LyapunovOptions, Measurement, Method, RunEvent, Spectrum,
-        SpectrumOptions, Starts, StopReason, StopRule, SweepRow, Threads, largest_lyapunov,
-        lyapunov_spectrum,
+        AlphaSweep, AnalysisError, Control, Engine, Ensemble, ErrorBudget, FiniteTimeBias,
+        FtleDistribution, FtleMap, FtleMapOptions, Lyapunov, LyapunovEstimate, LyapunovOptions,
+        Measurement, Method, Planner, RunEvent, Section, SectionPoint, Spectrum, SpectrumOptions,
+        Starts, StopReason, StopRule, SweepRow, Threads, largest_lyapunov, lyapunov_spectrum,
     };
     pub use spinball_core::{
         Ball, Billiard, Collision, EnergyMonitor, Observer, Recorder, Sampler, SpinLaw, State,
