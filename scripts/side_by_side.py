@@ -45,12 +45,14 @@ def authors_ns(fn, collisions, ics, alpha, geo, p1, p2, repeat):
     return times[len(times) // 2] / (collisions * ics) * 1e9
 
 
-def spinball_ns(binary, table, kernel, collisions, ics, alpha, threads, repeat):
+def spinball_ns(binary, table, kernel, collisions, ics, alpha, threads, repeat,
+                qr_interval=1):
     """Median wall ns per IC-step of a spinball lane kernel (best ISA)."""
     out = subprocess.run(
         [binary, "--table", table, "--kernel", kernel, "--ics", str(ics),
          "--collisions", str(collisions), "--alpha", str(alpha),
-         "--threads", str(threads), "--repeat", str(repeat), "--isa", "avx512"],
+         "--threads", str(threads), "--repeat", str(repeat), "--isa", "avx512",
+         "--qr-interval", str(qr_interval)],
         check=True, capture_output=True, text=True).stdout
     m = re.search(rf"^\S+\s+{kernel}\s+wall\s+([0-9.]+) ns/IC-step", out, re.M)
     if not m:
@@ -69,6 +71,10 @@ def main():
     p.add_argument("--authors-spectrum-ics", type=int, default=200)
     p.add_argument("--ics", type=int, default=4000, help="spinball's ICs")
     p.add_argument("--repeat", type=int, default=3)
+    p.add_argument("--qr-interval", type=int, default=None,
+                   help="also time spinball's spectrum with Gram-Schmidt every "
+                        "this many collisions (the authors' code and the default "
+                        "do it every collision)")
     a = p.parse_args()
 
     sys.path.insert(0, a.checkout)
@@ -80,8 +86,9 @@ def main():
           f"authors {a.authors_ics} ICs (spectrum {a.authors_spectrum_ics}), "
           f"spinball {a.ics} ICs; median of {a.repeat}; ns per IC-step (wall)")
     print("| scene | authors FD | spinball FD | ratio | spinball tangent | ratio "
-          "| authors spectrum | spinball spectrum | ratio |")
-    print("|---|---|---|---|---|---|---|---|---|")
+          "| authors spectrum | spinball spectrum | ratio |"
+          + (f" spectrum, QR every {a.qr_interval} | ratio |" if a.qr_interval else ""))
+    print("|---|---|---|---|---|---|---|---|---|" + ("---|---|" if a.qr_interval else ""))
     for name, spec, geo, p1, p2 in SCENES:
         g = getattr(sb, geo)
         fd_a = authors_ns(sb.lyapunov_ensemble, a.collisions, a.authors_ics,
@@ -91,9 +98,13 @@ def main():
         run = lambda k: spinball_ns(a.lanes_speed, spec, k, a.collisions, a.ics,
                                     a.alpha, a.threads, a.repeat)
         fd, tg, sp = run("fd"), run("tangent"), run("spectrum")
-        print(f"| {name} | {fd_a:.1f} | {fd:.2f} | {fd_a / fd:.1f}x | {tg:.2f} "
-              f"| {fd_a / tg:.1f}x | {sp_a:.1f} | {sp:.2f} | {sp_a / sp:.1f}x |",
-              flush=True)
+        row = (f"| {name} | {fd_a:.1f} | {fd:.2f} | {fd_a / fd:.1f}x | {tg:.2f} "
+               f"| {fd_a / tg:.1f}x | {sp_a:.1f} | {sp:.2f} | {sp_a / sp:.1f}x |")
+        if a.qr_interval:
+            sq = spinball_ns(a.lanes_speed, spec, "spectrum", a.collisions, a.ics,
+                             a.alpha, a.threads, a.repeat, a.qr_interval)
+            row += f" {sq:.2f} | {sp_a / sq:.1f}x |"
+        print(row, flush=True)
 
 
 if __name__ == "__main__":
