@@ -85,19 +85,11 @@ fn main() -> ExitCode {
                     _ => None,
                 };
                 // Cells the rotation predicts trapped (stadium only).
-                let speed = (1.0 - alpha * spin * spin).sqrt();
-                let mask: Vec<bool> = (0..size * size)
-                    .map(|k| {
-                        let (i, j) = (k % size, k / size);
-                        flats.is_some_and(|(_, f)| {
-                            f.trapped_at(&law, map.s(i), map.row(j) * speed, spin)
-                        })
-                    })
-                    .collect();
-                let predicted = mask.iter().filter(|&&m| m).count();
-                let predicted_regular = (0..size * size)
-                    .filter(|&k| mask[k] && map.exponents[k].is_some_and(|x| x <= CHAOS_THRESHOLD))
-                    .count();
+                let mask = flats.map_or_else(
+                    || vec![false; size * size],
+                    |(_, f)| f.trapped_cells(&law, &map),
+                );
+                let (predicted, predicted_regular) = map.regular_among(&mask);
                 let sampled = Ensemble::new(table, law)
                     .with_method(Method::Tangent)
                     .with_collisions(collisions)

@@ -49,6 +49,7 @@ use std::f64::consts::PI;
 use spinball_core::{Sampler, SpinLaw, State};
 use spinball_geometry::{DVec2, Stadium};
 
+use crate::ftle_map::FtleMap;
 use crate::trajectory::TrajectoryStats;
 
 /// The rotation of `(v_x, √α u)` by a bottom–top pair of collisions on two
@@ -175,6 +176,22 @@ impl FacingFlats {
         // Tangent (t, 0), inward normal (0, −y).
         let velocity = DVec2::new(t * v_par, -y * rest.sqrt());
         self.trapped(law, &State::new(DVec2::new(x, y), velocity, spin))
+    }
+
+    /// The cells of `map`, an FTLE map of this stadium under `law`, whose
+    /// starts the rotation predicts trapped between the flats (row-major,
+    /// like [`FtleMap::exponents`]); count the regular ones with
+    /// [`FtleMap::regular_among`].
+    #[must_use]
+    pub fn trapped_cells(&self, law: &SpinLaw, map: &FtleMap) -> Vec<bool> {
+        let (columns, rows) = (map.options.columns, map.options.rows);
+        (0..rows)
+            .flat_map(|j| (0..columns).map(move |i| (i, j)))
+            .map(|(i, j)| {
+                let (v_par, spin) = map.options.slice.coordinates(law.alpha(), map.row(j));
+                self.trapped_at(law, map.s(i), v_par, spin)
+            })
+            .collect()
     }
 }
 

@@ -39,6 +39,16 @@ pub enum Slice {
 }
 
 impl Slice {
+    /// `(v∥, u)` of a start at row coordinate `row` of this slice, on the
+    /// shell `|V| = 1`, under spin law parameter `alpha`.
+    #[must_use]
+    pub fn coordinates(&self, alpha: f64, row: f64) -> (f64, f64) {
+        match *self {
+            Slice::Spin(u) => (row * (1.0 - alpha * u * u).sqrt(), u),
+            Slice::Q(q) => (row, (row - q) / alpha),
+        }
+    }
+
     /// The name of the row coordinate.
     #[must_use]
     pub fn row_label(&self) -> &'static str {
@@ -151,6 +161,20 @@ impl FtleMap {
             on.len() as u64,
         )
     }
+    /// Of the cells where `mask` is set (row-major, like
+    /// [`exponents`](Self::exponents)), how many there are on the shell and
+    /// how many of those are regular.
+    #[must_use]
+    pub fn regular_among(&self, mask: &[bool]) -> (usize, usize) {
+        let t = self.options.threshold;
+        let inside = || {
+            self.exponents
+                .iter()
+                .zip(mask)
+                .filter_map(|(x, &m)| if m { *x } else { None })
+        };
+        (inside().count(), inside().filter(|&x| x <= t).count())
+    }
     /// Share of the cells on the shell that are regular. For a uniform grid
     /// in `(s, sin θ)` at α = 0 this is the share of the invariant measure
     /// `ds d(sin θ)` on regular orbits (to the grid's resolution).
@@ -206,10 +230,7 @@ fn cell_start<B: Boundary>(
     row: f64,
 ) -> Result<Option<State>, AnalysisError> {
     let alpha = law.alpha();
-    let (v_par, spin) = match slice {
-        Slice::Spin(u) => (row * (1.0 - alpha * u * u).sqrt(), u),
-        Slice::Q(q) => (row, (row - q) / alpha),
-    };
+    let (v_par, spin) = slice.coordinates(alpha, row);
     if v_par * v_par + alpha * spin * spin >= 1.0 {
         return Ok(None);
     }
