@@ -32,6 +32,7 @@ use crate::lyapunov::Method;
 use crate::measurement::Measurement;
 use crate::method_bias::MethodBias;
 use crate::result::LyapunovEstimate;
+use crate::separation::LinearFit;
 use crate::stop_rule::StopRule;
 
 /// The per-trajectory variance of the exponent against run length,
@@ -51,16 +52,12 @@ impl VarianceModel {
     #[must_use]
     pub fn fit(checkpoints: &[u64], variances: &[f64]) -> Self {
         let x: Vec<f64> = checkpoints.iter().map(|&c| 1.0 / c as f64).collect();
-        let n = x.len() as f64;
-        let (mx, my) = (x.iter().sum::<f64>() / n, variances.iter().sum::<f64>() / n);
-        let sxx: f64 = x.iter().map(|x| (x - mx) * (x - mx)).sum();
-        let sxy: f64 = x
-            .iter()
-            .zip(variances)
-            .map(|(x, y)| (x - mx) * (y - my))
-            .sum();
-        let slope = if sxx > 0.0 { sxy / sxx } else { 0.0 };
-        let intercept = my - slope * mx;
+        let my = variances.iter().sum::<f64>() / x.len() as f64;
+        let points: Vec<(f64, f64)> = x.iter().copied().zip(variances.iter().copied()).collect();
+        let LinearFit { slope, intercept } = LinearFit::through(&points).unwrap_or(LinearFit {
+            slope: 0.0,
+            intercept: my,
+        });
         if slope < 0.0 {
             VarianceModel {
                 at_infinity: my.max(0.0),

@@ -89,6 +89,29 @@ pub struct LinearFit {
     pub intercept: f64,
 }
 
+impl LinearFit {
+    /// Ordinary least squares through `points` (`(x, y)` pairs); `None`
+    /// unless there are two distinct `x`.
+    #[must_use]
+    pub fn through(points: &[(f64, f64)]) -> Option<Self> {
+        let n = points.len() as f64;
+        let x_mean = points.iter().map(|p| p.0).sum::<f64>() / n;
+        let y_mean = points.iter().map(|p| p.1).sum::<f64>() / n;
+        let (mut sxy, mut sxx) = (0.0, 0.0);
+        for &(x, y) in points {
+            sxy += (x - x_mean) * (y - y_mean);
+            sxx += (x - x_mean) * (x - x_mean);
+        }
+        (sxx > 0.0).then(|| {
+            let slope = sxy / sxx;
+            LinearFit {
+                slope,
+                intercept: y_mean - slope * x_mean,
+            }
+        })
+    }
+}
+
 /// `⟨ln(δ_n/δ0)⟩` over an ensemble of pairs, per collision (paper §V.A).
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -129,20 +152,9 @@ impl Separation {
                 ),
             ));
         }
-        let n = (b - a + 1) as f64;
-        let xs = || (a..=b).map(|k| k as f64);
-        let x_mean = xs().sum::<f64>() / n;
-        let y_mean = self.mean[a - 1..b].iter().sum::<f64>() / n;
-        let (mut sxy, mut sxx) = (0.0, 0.0);
-        for (x, y) in xs().zip(&self.mean[a - 1..b]) {
-            sxy += (x - x_mean) * (y - y_mean);
-            sxx += (x - x_mean) * (x - x_mean);
-        }
-        let slope = sxy / sxx;
-        Ok(LinearFit {
-            slope,
-            intercept: y_mean - slope * x_mean,
-        })
+        let points: Vec<(f64, f64)> = (a..=b).map(|k| (k as f64, self.mean[k - 1])).collect();
+        LinearFit::through(&points)
+            .ok_or_else(|| AnalysisError::invalid("collisions", "fit range holds one point"))
     }
 }
 
