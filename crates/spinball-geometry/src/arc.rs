@@ -12,7 +12,7 @@ use std::f64::consts::TAU;
 use glam::DVec2;
 
 use crate::error::{GeometryError, coordinate, finite, length};
-use crate::line::WallHit;
+use crate::line::{Approach, WallHit};
 
 /// A circular wall. See the [module docs](self) for the orientation rule.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -134,15 +134,88 @@ impl ArcSegment {
     /// Where a ball at `origin` with velocity `velocity` meets this arc from
     /// the table side, if it does. `along` of the result is left at 0 (the arc
     /// length needs an `atan2`; see [`Hit::s`](crate::Hit::s)).
+    ///
+    /// [`approach`](Self::approach), one division, then
+    /// [`land`](Self::land).
     #[inline]
     pub fn cast(&self, origin: DVec2, velocity: DVec2, slack: f64) -> Option<WallHit> {
-        let hit = if self.is_concave() {
-            cast_concave_circle(self.center, self.radius, origin, velocity)
-        } else {
-            cast_convex_circle(self.center, self.radius, origin, velocity)
-        }?;
-        self.covers(hit.point, slack).then_some(hit)
+        let a = self.approach(origin, velocity, slack)?;
+        let time = a.dist / a.speed;
+        let (point, normal) = self.land(origin, velocity, time);
+        Some(WallHit {
+            time,
+            point,
+            normal,
+            along: 0.0,
+        })
     }
+
+    /// Whether and how soon a ball at `origin` with velocity `velocity`
+    /// meets this arc from the table side, without dividing: the flight
+    /// time is the fraction [`Approach::dist`]` / `[`Approach::speed`], here
+    /// the circle root `t·|v|²` (clamped at 0) over `|v|²`. Every arc of a
+    /// table shares the denominator, so arcs compare by their numerators.
+    ///
+    /// The circle root is the exit for a concave arc (the larger root) and
+    /// the entry for a convex one (the smaller root, moving towards the
+    /// circle). A root behind the ball counts (as flight time 0) only for a
+    /// ball on the circle to rounding (`|d|² − R²` within `128 ε R²`); a ball
+    /// clear of the circle whose root is behind it does not meet the arc.
+    /// The contact must then lie on the arc: on the arc's side of its chord,
+    /// within `slack` (times the chord's length), tested on the unsnapped
+    /// contact `origin + v·t` multiplied through by `|v|²`:
+    /// `side · chord × ((origin − start)·|v|² + v·(t|v|²)) ≥ −slack·|chord|·|v|²`.
+    #[inline]
+    #[must_use]
+    pub fn approach(&self, origin: DVec2, velocity: DVec2, slack: f64) -> Option<Approach> {
+        let root = if self.is_concave() {
+            concave_root(self.center, self.radius, origin, velocity)?
+        } else {
+            convex_root(self.center, self.radius, origin, velocity)?
+        };
+        if root.num < 0.0 && root.c.abs() > touch(self.radius) {
+            return None;
+        }
+        let num = root.num.max(0.0);
+        if !self.full {
+            let q = (origin - self.start()) * root.a + velocity * num;
+            let reach = -slack * self.chord.length() * root.a;
+            if !(self.side * self.chord.perp_dot(q) >= reach) {
+                return None;
+            }
+        }
+        Some(Approach {
+            dist: num,
+            speed: root.a,
+        })
+    }
+
+    /// The contact of a ball at `origin` with velocity `velocity` after
+    /// flying for `time` (an [`approach`](Self::approach)'s fraction,
+    /// divided): the point snapped onto the circle and the unit normal
+    /// pointing into the table.
+    #[inline]
+    #[must_use]
+    pub fn land(&self, origin: DVec2, velocity: DVec2, time: f64) -> (DVec2, DVec2) {
+        let (point, radial) = contact(
+            self.center,
+            (origin - self.center) + velocity * time,
+            self.radius,
+        );
+        if self.is_concave() {
+            (point, -radial)
+        } else {
+            (point, radial)
+        }
+    }
+}
+
+/// Below this `|d|² − R²` a ball counts as on the circle of radius `r`
+/// (rounding): a concave cast then clamps `disc` at 0, and an arc accepts a
+/// root behind the ball as flight time 0.
+#[inline]
+pub(crate) fn touch(r: f64) -> f64 {
+    128.0 * f64::EPSILON * r * r
 }
 
 /// The ball inside the circle `|x - c| = R`: where it leaves through the
@@ -168,6 +241,8 @@ pub(crate) struct Root {
     pub num: f64,
     pub a: f64,
     pub d: DVec2,
+    /// `|d|² − R²`: how far off the circle the ball is.
+    pub c: f64,
 }
 
 impl Root {
@@ -206,7 +281,7 @@ pub(crate) fn concave_root(
     // A ball on the circle to rounding (c = O(ε R²) > 0) moving almost along
     // it can get disc < 0 from rounding alone (b² < a c): it touches the wall
     // at once rather than finding no wall.
-    let disc = if c <= 128.0 * f64::EPSILON * radius * radius {
+    let disc = if c <= touch(radius) {
         disc.max(0.0)
     } else {
         disc
@@ -221,6 +296,7 @@ pub(crate) fn concave_root(
         num: disc.sqrt() - b,
         a,
         d,
+        c,
     })
 }
 
@@ -250,6 +326,7 @@ pub(crate) fn convex_root(
         num: -b - disc.sqrt(),
         a,
         d,
+        c,
     })
 }
 

@@ -21,14 +21,19 @@ pub struct WallHit {
     pub along: f64,
 }
 
-/// A flat wall's flight time as an undivided fraction `dist / speed`
-/// (see [`LineSegment::approach`]): comparing two of them needs no
-/// division (`d₁·s₂ < d₂·s₁`, both speeds positive).
+/// A wall's flight time as an undivided fraction `dist / speed` (see
+/// [`LineSegment::approach`] and [`ArcSegment::approach`]): comparing two
+/// of them needs no division (`d₁·s₂ < d₂·s₁`, both denominators
+/// positive).
+///
+/// [`ArcSegment::approach`]: crate::ArcSegment::approach
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Approach {
-    /// Distance to the wall's line, clamped at 0 (`≥ 0`).
+    /// The numerator, `≥ 0`: for a flat wall the distance to its line
+    /// (clamped at 0), for an arc the circle root `t·|v|²` (clamped at 0).
     pub dist: f64,
-    /// Speed towards the wall, `−(v·n) > 0`.
+    /// The denominator, `> 0`: for a flat wall the speed towards it,
+    /// `−(v·n)`; for an arc `|v|²`.
     pub speed: f64,
 }
 

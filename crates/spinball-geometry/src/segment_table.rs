@@ -36,10 +36,11 @@
 use glam::DVec2;
 
 use crate::aabb::Aabb;
+use crate::arc::ArcSegment;
 use crate::boundary::Boundary;
 use crate::error::GeometryError;
 use crate::hit::{Hit, WallId};
-use crate::line::{LineSegment, WallHit};
+use crate::line::{Approach, LineSegment};
 use crate::loop_check::check_loops;
 use crate::segment::Segment;
 use crate::shape::Shape;
@@ -296,9 +297,10 @@ impl Boundary for SegmentTable {
     /// flat walls are compared by their undivided flight times
     /// ([`LineSegment::approach`], cross-multiplied: `d·s' < d'·s`) in the
     /// order of [`flat_visits`](SegmentTable::flat_visits), the arcs by
-    /// their flight times in id order (their casts share `1/|v|²`), then
-    /// the earliest arc against the earliest flat wall (`t·s < d`), and the
-    /// flat wall's fraction is divided only if it wins.
+    /// the numerators of theirs ([`ArcSegment::approach`]: every arc's
+    /// denominator is `|v|²`) in id order, then the earliest arc against
+    /// the earliest flat wall (`t|v|²·s < d·|v|²`), and only the winner's
+    /// fraction is divided.
     fn cast(&self, origin: DVec2, v: DVec2) -> Option<Hit> {
         // Is (dist, speed) of wall `id` earlier than `b`, ties to the lower id?
         let earlier = |id: usize, a: &LineSegment, b: &Option<Earliest>| {
@@ -331,18 +333,18 @@ impl Boundary for SegmentTable {
                 }
             }
         }
-        let mut round: Option<(usize, WallHit)> = None;
+        let mut round: Option<(usize, ArcSegment, Approach)> = None;
         for (i, w) in self.walls.iter().enumerate() {
             if let Segment::Arc(a) = w
-                && let Some(h) = a.cast(origin, v, self.slack)
-                && round.is_none_or(|(_, b)| h.time < b.time)
+                && let Some(h) = a.approach(origin, v, self.slack)
+                && round.is_none_or(|(_, _, b)| h.dist < b.dist)
             {
-                round = Some((i, h));
+                round = Some((i, *a, h));
             }
         }
         let arc_wins = match (round, flat) {
-            (Some((i, h)), Some(f)) => {
-                let (x, y) = (h.time * f.speed, f.dist);
+            (Some((i, _, h)), Some(f)) => {
+                let (x, y) = (h.dist * f.speed, f.dist * h.speed);
                 x < y || (x == y && i < f.wall)
             }
             (r, _) => r.is_some(),
@@ -361,14 +363,13 @@ impl Boundary for SegmentTable {
                 self.bases[f.wall] + along,
             ));
         }
-        let (i, h) = round?;
-        let Segment::Arc(a) = self.walls[i] else {
-            unreachable!("round hits are arcs")
-        };
+        let (i, a, h) = round?;
+        let time = h.dist / h.speed;
+        let (point, normal) = a.land(origin, v, time);
         Some(Hit::on_circle(
-            h.time,
-            h.point,
-            h.normal,
+            time,
+            point,
+            normal,
             a.curvature(),
             i as WallId,
             self.bases[i],

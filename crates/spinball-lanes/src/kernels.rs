@@ -489,13 +489,14 @@ mod tests {
         let seg_stadium = segment_tables::stadium(1.0);
         let ls = LaneSegments::new(&seg_stadium);
         let c = counts("seg-stadium", &seg_stadium, &ls.view::<true>(), &l, &law);
-        // With arcs: the arcs' shared 1/|v|² and the one division of the
-        // chosen flat wall; a square root per arc.
-        assert_eq!(c[0], [2.0, 2.0]);
+        // With arcs too, one division per cast (the chosen wall's fraction:
+        // every arc's denominator is |v|²) and a square root per arc; the
+        // fallback of the winning arc's contact never runs.
+        assert_eq!(c[0], [1.0, 2.0]);
         let mushroom = segment_tables::mushroom(1.0, 0.3, 1.0);
         let lm = LaneSegments::new(&mushroom);
         let c = counts("mushroom", &mushroom, &lm.view::<true>(), &l, &law);
-        assert_eq!(c[0], [2.0, 1.0]);
+        assert_eq!(c[0], [1.0, 1.0]);
         let gon = segment_tables::alternating_twenty_gon();
         let lg = LaneSegments::new(&gon);
         let c = counts("20-gon", &gon, &lg.view::<false>(), &l, &law);

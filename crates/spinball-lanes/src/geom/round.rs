@@ -113,28 +113,35 @@ impl Round {
 /// wall: a flight time clamped at 0) the scalar normalises exactly instead;
 /// that is computed only if such a lane exists.
 ///
+/// The radius `r` and its reciprocal `inv_r` (the scalar's `1.0 / radius`)
+/// come per lane: the arcs of a table built from segments differ by lane.
 /// `UNIT`: the radius is 1, so the scalar's multiplications by `1/r²`, `1/r`
 /// and `r` are multiplications by 1.0, exact, and left out.
 #[inline(always)]
-fn contact<L: Lanes, const UNIT: bool>(
+pub(super) fn contact<L: Lanes, const UNIT: bool>(
     cx: L,
     cy: L,
     rx: L,
     ry: L,
-    k: &Round,
+    r: L,
+    inv_r: L,
     care: L::Mask,
 ) -> (L, L, L, L) {
-    let times = |x: L, f: f64| if UNIT { x } else { x * f };
-    let rr = times(rx * rx + ry * ry, k.inv_r * k.inv_r);
+    let times = |x: L, f: L| if UNIT { x } else { x * f };
+    let rr = if UNIT {
+        rx * rx + ry * ry
+    } else {
+        (rx * rx + ry * ry) * (inv_r * inv_r)
+    };
     let near = (rr - 1.0).abs().lt(L::splat(1e-8));
-    let s = times(L::splat(1.5) - rr * 0.5, k.inv_r);
+    let s = times(L::splat(1.5) - rr * 0.5, inv_r);
     let (mut nx, mut ny) = (rx * s, ry * s);
     if care.and(near.not()).any() {
         let inv = L::splat(1.0) / (rx * rx + ry * ry).sqrt();
         nx = L::select(near, nx, rx * inv);
         ny = L::select(near, ny, ry * inv);
     }
-    (cx + times(nx, k.r), cy + times(ny, k.r), nx, ny)
+    (cx + times(nx, r), cy + times(ny, r), nx, ny)
 }
 
 /// A circle root per lane as an undivided fraction: the flight time is
@@ -147,6 +154,8 @@ pub(super) struct Root<L: Lanes> {
     pub num: L,
     pub dx: L,
     pub dy: L,
+    /// `|d|² − r²`: how far off the circle the ball is.
+    pub c: L,
 }
 
 /// `concave_root` of `spinball-geometry`: the larger root for a ball inside
@@ -174,6 +183,7 @@ pub(super) fn concave_root<L: Lanes, const ON_AXIS: bool>(
         num: disc.sqrt() - b,
         dx,
         dy,
+        c,
     }
 }
 
@@ -194,6 +204,7 @@ pub(super) fn convex_root<L: Lanes>(cx: L, cy: L, k: &Round, ray: &Ray<L>) -> Ro
         num: -b - disc.sqrt(),
         dx,
         dy,
+        c,
     }
 }
 
@@ -215,7 +226,8 @@ pub(super) fn contact_at<L: Lanes, const UNIT: bool>(
         cy,
         root.dx + ray.vx * time,
         root.dy + ray.vy * time,
-        k,
+        L::splat(k.r),
+        L::splat(k.inv_r),
         care,
     )
 }
@@ -240,28 +252,5 @@ pub(super) fn concave<L: Lanes, const UNIT: bool, const ON_AXIS: bool>(
         py,
         nx: -radx,
         ny: -rady,
-    }
-}
-
-/// `cast_convex_circle`: the ball outside the circle, where it meets it.
-#[inline(always)]
-pub(super) fn convex<L: Lanes, const UNIT: bool>(
-    cx: L,
-    cy: L,
-    k: &Round,
-    ray: &Ray<L>,
-    care: L::Mask,
-) -> Contact<L> {
-    let root = convex_root(cx, cy, k, ray);
-    let time = (root.num * ray.inv_a).max(L::splat(0.0));
-    let (px, py, radx, rady) =
-        contact_at::<L, UNIT>(cx, cy, &root, ray, time, k, care.and(root.ok));
-    Contact {
-        ok: root.ok,
-        time,
-        px,
-        py,
-        nx: radx,
-        ny: rady,
     }
 }

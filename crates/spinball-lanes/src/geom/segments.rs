@@ -4,13 +4,15 @@
 //! The scalar `SegmentTable::cast` picks the earliest wall with one
 //! division: the flat walls are compared by their undivided flight times
 //! (`LineSegment::approach`, cross-multiplied), in the order of
-//! `SegmentTable::flat_visits`; the arcs by their flight times (their circle
-//! casts share `1/|v|²`) in id order; then the earliest arc against the
-//! earliest flat wall, and the flat wall's fraction is divided only if it
-//! wins. Here every wall is cast for every lane with the same arithmetic
-//! and the same comparisons, and the earliest kept by compare-and-select,
-//! so a lane finds bitwise the scalar hit. The walls' constants are
-//! computed once, when the table is compiled into a [`LaneSegments`].
+//! `SegmentTable::flat_visits`; the arcs by the numerators of theirs
+//! (`ArcSegment::approach`: every arc divides by `|v|²`) in id order; then
+//! the earliest arc against the earliest flat wall, cross-multiplied, and
+//! only the winner's fraction is divided and only the winner is landed
+//! (a flat wall's contact, or an arc's contact snapped onto its circle).
+//! Here every wall is cast for every lane with the same arithmetic and
+//! the same comparisons, and the earliest kept by compare-and-select, so a
+//! lane finds bitwise the scalar hit. The walls' constants are computed
+//! once, when the table is compiled into a [`LaneSegments`].
 //!
 //! A pair of flat walls with exactly opposite normals (see
 //! `spinball_geometry::FlatVisit`) is cast as one wall whose constants are
@@ -23,7 +25,7 @@ use std::f64::consts::TAU;
 
 use spinball_geometry::{ArcSegment, DVec2, FlatVisit, LineSegment, Segment, SegmentTable};
 
-use super::round::{Contact, Ray, Round, concave, convex};
+use super::round::{Ray, Round, concave_root, contact, convex_root};
 use super::{Geom, LaneHit};
 use crate::lanes::{Lanes, MaskOps};
 
@@ -97,27 +99,20 @@ struct FlatLanes<L: Lanes> {
     hi: L,
 }
 
-/// How an arc meets a ball: from inside its circle or from outside, and
-/// whether its radius is 1 (then the contact's scalings by `r` and `1/r`
-/// are exact and skipped).
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum Form {
-    Concave,
-    ConcaveUnit,
-    Convex,
-    ConvexUnit,
-}
-
-/// An arc's constants, as `ArcSegment::cast` and `covers` use them.
+/// An arc's constants, as `ArcSegment::approach` and `land` use them.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Curve {
     /// Wall id.
     id: f64,
-    form: Form,
+    /// The ball meets it from inside its circle (else from outside).
+    concave: bool,
     cx: f64,
     cy: f64,
     round: Round,
     curvature: f64,
+    /// The inward normal's sign against the radial direction: −1 concave,
+    /// +1 convex (multiplying by it negates exactly).
+    sign: f64,
     /// A full circle covers every contact.
     full: bool,
     /// Start point.
@@ -126,7 +121,8 @@ struct Curve {
     /// The chord from start to end, times the side of it the arc lies on.
     chx: f64,
     chy: f64,
-    /// `−slack · |chord|`: how far behind the chord a contact still counts.
+    /// `−slack · |chord|`: how far behind the chord a contact still counts
+    /// (times `|v|²` in the test).
     reach: f64,
 }
 
@@ -140,21 +136,15 @@ impl Curve {
         let chord = (to - from) * r;
         let side = chord.perp_dot((mid - from) * r).signum();
         let full = a.sweep().abs() >= TAU * (1.0 - 1e-12);
-        let unit = r == 1.0;
-        let form = match (a.is_concave(), unit) {
-            (true, false) => Form::Concave,
-            (true, true) => Form::ConcaveUnit,
-            (false, false) => Form::Convex,
-            (false, true) => Form::ConvexUnit,
-        };
         let (c, start) = (a.center(), a.start());
         Curve {
             id: id as f64,
-            form,
+            concave: a.is_concave(),
             cx: c.x,
             cy: c.y,
             round: Round::new(r),
             curvature: a.curvature(),
+            sign: if a.is_concave() { -1.0 } else { 1.0 },
             full,
             sx: start.x,
             sy: start.y,
@@ -188,6 +178,9 @@ pub(crate) struct LaneSegments {
     /// `−slack`: how far behind a flat wall, or past its ends, a ball or a
     /// contact still counts.
     lo: f64,
+    /// Every arc has radius 1 (the contact's scalings by `r` and `1/r` are
+    /// then exact and skipped).
+    unit: bool,
 }
 
 impl LaneSegments {
@@ -213,8 +206,9 @@ impl LaneSegments {
                 Segment::Arc(a) => Some(Curve::new(i, a, slack)),
                 Segment::Line(_) => None,
             })
-            .collect();
+            .collect::<Vec<Curve>>();
         LaneSegments {
+            unit: arcs.iter().all(|a| a.round.r == 1.0),
             steps,
             arcs,
             lo: -slack,
@@ -238,6 +232,7 @@ impl LaneSegments {
             steps: &self.steps,
             arcs: &self.arcs,
             lo: self.lo,
+            unit: self.unit,
         }
     }
 }
@@ -249,6 +244,7 @@ pub(crate) struct Segments<'a, const CURVED: bool> {
     steps: &'a [Step],
     arcs: &'a [Curve],
     lo: f64,
+    unit: bool,
 }
 
 /// `f64::clamp` with per-lane bounds (`lo <= hi`, neither NaN).
@@ -316,11 +312,11 @@ impl<L: Lanes> Earliest<L> {
         self.length = L::select(take, c.length, self.length);
     }
 
-    /// `LineSegment::land` after the one division, as a hit.
+    /// `LineSegment::land` after flying for `time` (the one division), as
+    /// a hit.
     #[inline(always)]
-    fn land(&self, ray: &Ray<L>) -> LaneHit<L> {
+    fn land(&self, ray: &Ray<L>, time: L) -> LaneHit<L> {
         let zero = L::splat(0.0);
-        let time = self.dist / self.speed;
         let relx = ray.x - self.sx;
         let rely = ray.y - self.sy;
         let along =
@@ -339,6 +335,42 @@ impl<L: Lanes> Earliest<L> {
     }
 }
 
+/// The earliest arc so far, lane by lane: its root's numerator (the
+/// flight time times `|v|²`; NaN while there is none) and what `land` needs.
+#[derive(Clone, Copy, Debug)]
+struct Nearest<L: Lanes> {
+    num: L,
+    id: L,
+    cx: L,
+    cy: L,
+    r: L,
+    inv_r: L,
+    sign: L,
+    curvature: L,
+}
+
+impl<L: Lanes> Nearest<L> {
+    /// `ArcSegment::land` after flying for `time`, as a hit, in the lanes
+    /// of `care` (where the arc won; the exact normalisation of a contact
+    /// off the circle is computed only if such a lane has one).
+    #[inline(always)]
+    fn land<const UNIT: bool>(&self, ray: &Ray<L>, time: L, care: L::Mask) -> LaneHit<L> {
+        let rx = (ray.x - self.cx) + ray.vx * time;
+        let ry = (ray.y - self.cy) + ray.vy * time;
+        let (px, py, radx, rady) =
+            contact::<L, UNIT>(self.cx, self.cy, rx, ry, self.r, self.inv_r, care);
+        LaneHit {
+            time,
+            px,
+            py,
+            nx: radx * self.sign,
+            ny: rady * self.sign,
+            curvature: self.curvature,
+            wall: self.id,
+        }
+    }
+}
+
 /// Replace the best hit by `c` in the lanes of `take`.
 #[inline(always)]
 fn keep<L: Lanes>(best: &mut LaneHit<L>, take: L::Mask, c: LaneHit<L>) {
@@ -352,34 +384,63 @@ fn keep<L: Lanes>(best: &mut LaneHit<L>, take: L::Mask, c: LaneHit<L>) {
 }
 
 impl<const CURVED: bool> Segments<'_, CURVED> {
-    /// An arc's candidate: the circle cast, then `ArcSegment::covers`.
+    /// `ArcSegment::approach`, lane by lane: the lanes where it returns
+    /// `Some`, and the root's numerator (clamped at 0).
     #[inline(always)]
-    fn arc<L: Lanes>(&self, a: &Curve, ray: &Ray<L>) -> (L::Mask, LaneHit<L>) {
+    fn approach_arc<L: Lanes>(&self, a: &Curve, ray: &Ray<L>) -> (L::Mask, L) {
         let zero = L::splat(0.0);
-        let all = zero.eq(zero);
         let (cx, cy) = (L::splat(a.cx), L::splat(a.cy));
-        let c: Contact<L> = match a.form {
-            Form::Concave => concave::<L, false, false>(cx, cy, &a.round, ray, all),
-            Form::ConcaveUnit => concave::<L, true, false>(cx, cy, &a.round, ray, all),
-            Form::Convex => convex::<L, false>(cx, cy, &a.round, ray, all),
-            Form::ConvexUnit => convex::<L, true>(cx, cy, &a.round, ray, all),
-        };
-        let ok = if a.full {
-            c.ok
+        let root = if a.concave {
+            concave_root::<L, false>(cx, cy, &a.round, ray)
         } else {
-            let cross = (c.py - a.sy) * a.chx - (c.px - a.sx) * a.chy;
-            c.ok.and(cross.ge(L::splat(a.reach)))
+            convex_root(cx, cy, &a.round, ray)
         };
-        let hit = LaneHit {
-            time: c.time,
-            px: c.px,
-            py: c.py,
-            nx: c.nx,
-            ny: c.ny,
-            curvature: L::splat(a.curvature),
-            wall: L::splat(a.id),
+        // A root behind a ball clear of the circle is no hit.
+        let behind = root
+            .num
+            .lt(zero)
+            .and(root.c.abs().gt(L::splat(a.round.touch)));
+        let ok = root.ok.and(behind.not());
+        let num = root.num.max(zero);
+        if a.full {
+            return (ok, num);
+        }
+        let qx = (ray.x - a.sx) * ray.a + ray.vx * num;
+        let qy = (ray.y - a.sy) * ray.a + ray.vy * num;
+        let cross = qy * a.chx - qx * a.chy;
+        (ok.and(cross.ge(L::splat(a.reach) * ray.a)), num)
+    }
+
+    /// The earliest arc of every lane, in id order: only a strictly
+    /// earlier root replaces the best (and any root replaces none).
+    #[inline(always)]
+    fn arcs<L: Lanes>(&self, ray: &Ray<L>) -> Nearest<L> {
+        let zero = L::splat(0.0);
+        let mut best = Nearest {
+            num: L::splat(f64::NAN),
+            id: zero,
+            cx: zero,
+            cy: zero,
+            r: zero,
+            inv_r: zero,
+            sign: zero,
+            curvature: zero,
         };
-        (ok, hit)
+        for a in self.arcs {
+            let (ok, num) = self.approach_arc(a, ray);
+            let take = ok.and(best.num.le(num).not());
+            best.num = L::select(take, num, best.num);
+            best.id = L::select(take, L::splat(a.id), best.id);
+            best.cx = L::select(take, L::splat(a.cx), best.cx);
+            best.cy = L::select(take, L::splat(a.cy), best.cy);
+            if !self.unit {
+                best.r = L::select(take, L::splat(a.round.r), best.r);
+                best.inv_r = L::select(take, L::splat(a.round.inv_r), best.inv_r);
+            }
+            best.sign = L::select(take, L::splat(a.sign), best.sign);
+            best.curvature = L::select(take, L::splat(a.curvature), best.curvature);
+        }
+        best
     }
 
     /// The earliest flat wall of every lane.
@@ -437,6 +498,29 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
     }
 }
 
+impl<const CURVED: bool> Segments<'_, CURVED> {
+    /// The cast of a table with arcs; `UNIT`: every arc has radius 1.
+    #[inline(always)]
+    fn curved<L: Lanes, const UNIT: bool>(&self, ray: &Ray<L>) -> LaneHit<L> {
+        let flat = self.flats(ray);
+        let round = self.arcs(ray);
+        // The earliest arc against the earliest flat wall, cross-multiplied:
+        // `t|v|²·speed < dist·|v|²` (any arc if there is no flat wall, a NaN
+        // `dist`), ties to the lower id.
+        let (x, y) = (round.num * flat.speed, flat.dist * ray.a);
+        let arc_wins = round
+            .num
+            .eq(round.num)
+            .and(y.le(x).not().or(x.eq(y).and(round.id.lt(flat.id))));
+        // The one division: the winner's fraction.
+        let time =
+            L::select(arc_wins, round.num, flat.dist) / L::select(arc_wins, ray.a, flat.speed);
+        let mut best = flat.land(ray, time);
+        keep(&mut best, arc_wins, round.land::<UNIT>(ray, time, arc_wins));
+        best
+    }
+}
+
 impl<const CURVED: bool> Geom for Segments<'_, CURVED> {
     const CURVED: bool = CURVED;
 
@@ -444,39 +528,16 @@ impl<const CURVED: bool> Geom for Segments<'_, CURVED> {
     fn cast<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> LaneHit<L> {
         if !CURVED {
             let ray = Ray::flat(x, y, vx, vy);
-            return self.flats(&ray).land(&ray);
+            let flat = self.flats(&ray);
+            return flat.land(&ray, flat.dist / flat.speed);
         }
-        let zero = L::splat(0.0);
-        // `|v|²` and its reciprocal serve every arc.
-        let ray = Ray::new(x, y, vx, vy);
-        let flat = self.flats(&ray);
-        let mut round = LaneHit {
-            time: L::splat(f64::NAN),
-            px: zero,
-            py: zero,
-            nx: zero,
-            ny: zero,
-            curvature: zero,
-            wall: zero,
-        };
-        for a in self.arcs {
-            let (ok, hit) = self.arc(a, &ray);
-            // In id order: only a strictly earlier hit replaces the best
-            // (and any hit replaces none, a NaN time).
-            let take = ok.and(round.time.le(hit.time).not());
-            keep(&mut round, take, hit);
+        // `|v|²` serves every arc.
+        let ray = Ray::new_undivided(x, y, vx, vy);
+        if self.unit {
+            self.curved::<L, true>(&ray)
+        } else {
+            self.curved::<L, false>(&ray)
         }
-        // The earliest arc against the earliest flat wall: `t·speed < dist`
-        // (any arc if there is no flat wall, a NaN `dist`), ties to the
-        // lower id.
-        let (x, y) = (round.time * flat.speed, flat.dist);
-        let arc_wins = round
-            .time
-            .eq(round.time)
-            .and(y.le(x).not().or(x.eq(y).and(round.wall.lt(flat.id))));
-        let mut best = flat.land(&ray);
-        keep(&mut best, arc_wins, round);
-        best
     }
 }
 
