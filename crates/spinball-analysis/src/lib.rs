@@ -167,7 +167,7 @@ pub use wall_statistics::{
 };
 pub use work_precision::{Budget, WorkPoint, work_precision};
 
-pub use bouncing_ball::{BouncingShare, FacingFlats, FlatBand, bouncing_share, pair_rotation};
+pub use bouncing_ball::{BouncingShare, FacingFlats, FlatBand, pair_rotation};
 pub use ftle_map::{FtleMap, FtleMapOptions, Slice, ftle_map};
 pub use invariant_measure::{InvariantMeasure, SectionBox};
 pub use island_map::{IslandMap, island_map};
