@@ -19,13 +19,12 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::{
-    EnergyHistory, component_law_energy_history, energy_history, energy_trace,
-};
+use spinball_analysis::energy_conservation;
 use spinball_core::{Billiard, SpinLaw, State};
 use spinball_geometry::{DVec2, Table};
 use spinball_plot::{
-    Csv, Grid, Legend, LineKind, LinePlot, RGBColor, Series, format_tick, run_figure, viridis,
+    Csv, ENERGY_LONG_COLUMNS, ENERGY_TRACE_COLUMNS, EnergyPanels, Grid, energy_long_rows,
+    energy_trace_rows, format_tick, run_figure,
 };
 
 const NAME: &str = "fig_energy";
@@ -33,21 +32,12 @@ const ABOUT: &str = "Energy conservation |Eₙ − E₀| per collision and over 
 const ALPHAS: [f64; 4] = [0.0, 0.3, 0.7, 1.0];
 const THETA0: f64 = 0.8;
 const U0: f64 = 0.0;
-/// Where exact zeros are drawn on the log axes.
-const FLOOR: f64 = 1e-18;
 const TABLES: [(&str, &str, [f64; 2]); 4] = [
     ("circle:R=1", "circle R = 1", [0.3, 0.2]),
     ("rectangle:L=1.5,H=1", "rectangle 1.5 × 1", [0.3, 0.2]),
     ("stadium:a=1", "stadium a = 1", [0.3, 0.2]),
     ("sinai:L=2,R=1", "Sinai L = 2, R = 1", [-1.5, 0.2]),
 ];
-
-/// `max |ΔE|/E₀` up to each checkpoint, floored.
-fn curve(h: &EnergyHistory) -> Vec<(f64, f64)> {
-    let p = h.points.iter();
-    p.map(|p| (p.collisions as f64, p.max_relative_deviation.max(FLOOR)))
-        .collect()
-}
 
 fn main() -> ExitCode {
     run_figure(NAME, ABOUT, |args, report| {
@@ -58,67 +48,29 @@ fn main() -> ExitCode {
         let long = format_tick(long_len as f64);
         let title = format!("Largest relative energy deviation over {long} collisions");
         let mut longs = Grid::new(2, 2).title(title);
-        let mut trace_csv = Csv::with_columns("table,alpha,n,abs_dE");
-        let mut long_csv = Csv::with_columns("table,alpha,n,max_rel_dE,paper_formulas_max_rel_dE");
+        let mut trace_csv = Csv::new(&ENERGY_TRACE_COLUMNS);
+        let mut long_csv = Csv::new(&ENERGY_LONG_COLUMNS);
         let mut rows = Vec::new();
         for (spec, title, start) in TABLES {
             let table: Table = spec.parse()?;
             let start = State::new(DVec2::from(start), DVec2::from_angle(THETA0), U0);
-            let mut trace_plot = LinePlot::with_axes(title, "collision number n", "|Eₙ − E₀|")
-                .log_y(true)
-                .y_range(FLOOR / 3.0, 1e-13)
-                .hline(f64::EPSILON * 0.5, "ε·E₀")
-                .hline(FLOOR, "exact 0");
-            // A legend entry for the dashed curves (its one point is clipped).
-            let dashed = Series::new("dashed: paper eqs. 1–3", [(1.0, FLOOR / 3.0)]).line_only();
-            let mut long_plot = LinePlot::with_axes(title, "collisions n", "max |ΔE|/E₀ up to n")
-                .log_x(true)
-                .log_y(true)
-                .y_range(FLOOR / 3.0, 1e-9)
-                .legend(Legend::UpperLeft)
-                .hline(f64::EPSILON, "ε")
-                .hline(FLOOR, "exact 0")
-                .series(dashed.kind(LineKind::Dashed).color(RGBColor(60, 60, 60)));
+            let mut panels = EnergyPanels::new(title);
             for (k, alpha) in ALPHAS.into_iter().enumerate() {
                 let billiard = Billiard::new(table, SpinLaw::new(alpha)?);
-                let trace = energy_trace(&billiard, start, trace_len, 1)?;
-                let deviations: Vec<f64> = trace.points.iter().map(|p| p.deviation).collect();
-                let ours = energy_history(&billiard, start, long_len)?;
-                let paper = component_law_energy_history(&table, billiard.law(), start, long_len)?;
-                for (n, d) in deviations.iter().enumerate() {
-                    trace_csv.row(&[&spec, &alpha, &(n + 1), &format!("{d:e}")]);
-                }
-                for (p, q) in ours.points.iter().zip(&paper.points) {
-                    let (a, b) = (p.max_relative_deviation, q.max_relative_deviation);
-                    let (a, b) = (format!("{a:e}"), format!("{b:e}"));
-                    long_csv.row(&[&spec, &alpha, &p.collisions, &a, &b]);
-                }
-                // Later series are drawn over earlier ones: shrink their
-                // markers so every α stays visible.
-                let color = viridis(k as f64 / (ALPHAS.len() - 1) as f64 * 0.85);
-                let pts = deviations
-                    .iter()
-                    .enumerate()
-                    .map(|(n, d)| ((n + 1) as f64, d.max(FLOOR)));
-                let dots = Series::new(format!("α = {alpha}"), pts).markers_only();
-                trace_plot =
-                    trace_plot.series(dots.marker_radius(4 - k.min(3) as u32).color(color));
-                let dashed = Series::unlabelled(curve(&paper))
-                    .line_only()
-                    .kind(LineKind::Dashed);
-                long_plot = long_plot
-                    .series(Series::new(format!("α = {alpha}"), curve(&ours)).color(color))
-                    .series(dashed.color(color));
-                let zeros = deviations.iter().filter(|d| **d == 0.0).count();
-                let largest = deviations.iter().copied().fold(0.0, f64::max);
+                // The trace, and the long run of our map and of the paper's
+                // formulas in components.
+                let check = energy_conservation(&billiard, start, trace_len, long_len)?;
+                energy_trace_rows(&mut trace_csv, spec, alpha, &check.trace);
+                energy_long_rows(&mut long_csv, spec, alpha, &check);
+                panels = panels.add(k, ALPHAS.len(), alpha, &check);
                 rows.push(json!({
-                    "table": spec, "alpha": alpha, "trace_max_abs_dE": largest,
-                    "trace_exact_zero_fraction": zeros as f64 / deviations.len().max(1) as f64,
-                    "long": ours, "paper_formulas_long": paper,
+                    "table": spec, "alpha": alpha, "trace_max_abs_dE": check.trace.max_deviation,
+                    "trace_exact_zero_fraction": check.trace.exact_zero_fraction(),
+                    "long": check.library, "paper_formulas_long": check.components,
                 }));
             }
-            traces.push(trace_plot);
-            longs.push(long_plot);
+            traces.push(panels.trace);
+            longs.push(panels.long);
         }
         let size = args.pick((1200, 900), (1600, 1200), (2000, 1500));
         report.png("energy_trace.png", &traces, size)?;

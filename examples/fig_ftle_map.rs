@@ -26,13 +26,13 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::{
-    CHAOS_THRESHOLD, Ensemble, FacingFlats, FtleMapOptions, Method, Slice, bouncing_share, ftle_map,
-};
-use spinball_core::{Sampler, SpinLaw};
+use spinball_analysis::{FacingFlats, FtleMapOptions, Slice, island_map};
+use spinball_core::SpinLaw;
 use spinball_geometry::Table;
 use spinball_plot::cli::Opt;
-use spinball_plot::{Colorbar, Csv, Grid, MapPlot, run_figure_with};
+use spinball_plot::{
+    Colorbar, Csv, Grid, ISLAND_COLUMNS, island_panel, island_row, run_figure_with,
+};
 
 const NAME: &str = "fig_ftle_map";
 const ABOUT: &str = "FTLE maps on the section (s, sin θ) at fixed spin, stadium and Sinai at α = 0, 0.3, 0.5, 1, with the predicted bouncing-ball island.";
@@ -59,95 +59,24 @@ fn main() -> ExitCode {
         let mut grid = Grid::new(TABLES.len(), ALPHAS.len())
             .title(format!("FTLE maps at u = {spin}: {size}² starts × {collisions} collisions (red: predicted bouncing balls)"))
             .colorbar(Colorbar::new("FTLE (1/time)", 0.0, FTLE_MAX));
-        let mut csv = Csv::new(&[
-            "table",
-            "alpha",
-            "spin",
-            "cells",
-            "collisions",
-            "map_regular_fraction",
-            "sampler_chaotic_fraction",
-            "sampler_chaotic_fraction_sem",
-            "predicted_cells",
-            "predicted_cells_regular",
-            "sampler_regular",
-            "sampler_regular_predicted",
-            "sampler_chaotic_predicted",
-        ]);
+        let mut csv = Csv::new(&ISLAND_COLUMNS);
         let mut maps = Vec::new();
         for spec in TABLES {
             let table: Table = spec.parse()?;
+            let name = table.name();
             for alpha in ALPHAS {
-                let law = SpinLaw::new(alpha)?;
-                let map = ftle_map(table, law, &options)?;
-                let flats = match table {
-                    Table::Stadium(s) => Some((s, FacingFlats::of(&s))),
-                    _ => None,
-                };
-                // Cells the rotation predicts trapped (stadium only).
-                let mask = flats.map_or_else(
-                    || vec![false; size * size],
-                    |(_, f)| f.trapped_cells(&law, &map),
-                );
-                let (predicted, predicted_regular) = map.regular_among(&mask);
-                let sampled = Ensemble::new(table, law)
-                    .with_method(Method::Tangent)
-                    .with_collisions(collisions)
-                    .with_ics(ics)
-                    .with_seed(args.seed)
-                    .with_threads(args.threads)
-                    .run()?;
-                let share = flats.map(|(s, _)| {
-                    bouncing_share(
-                        &s,
-                        &law,
-                        Sampler::Paper,
-                        args.seed,
-                        &sampled.trajectories,
-                        CHAOS_THRESHOLD,
-                    )
-                });
-                let (regular, regular_in, chaotic_in) = share.map_or((0, 0, 0), |s| {
-                    (s.regular, s.regular_trapped, s.chaotic_trapped)
-                });
-                println!(
-                    "  {:<8} α = {alpha:<4} map regular {:.4}, sampler chaotic {:.4} ± {:.4}, predicted cells {predicted} ({predicted_regular} regular), sampler regular {regular} of which predicted {regular_in}, chaotic predicted {chaotic_in}",
-                    table.name(),
-                    map.regular_fraction(),
-                    sampled.chaotic_fraction,
-                    sampled.chaotic_fraction_sem
-                );
-                csv.row(&[
-                    &table.name(),
-                    &alpha,
-                    &spin,
-                    &(size * size),
-                    &collisions,
-                    &map.regular_fraction(),
-                    &sampled.chaotic_fraction,
-                    &sampled.chaotic_fraction_sem,
-                    &predicted,
-                    &predicted_regular,
-                    &regular,
-                    &regular_in,
-                    &chaotic_in,
-                ]);
-                let file = format!("ftle_map_{}_{alpha}.npy", table.name());
+                // The map, the sampler, and (stadium only) the cells and
+                // orbits the rotation predicts trapped between the flats.
+                let flats = FacingFlats::of_table(&table);
+                let island = island_map(table, SpinLaw::new(alpha)?, flats, &options, ics)?;
+                println!("  {name:<8} α = {alpha:<4} {island}");
+                island_row(&mut csv, name, &island);
+                let (map, sampled) = (&island.map, &island.sampled);
+                let file = format!("ftle_map_{name}_{alpha}.npy");
                 report.npy(&file, &[size as u64, size as u64], &map.to_array())?;
-                let title = format!(
-                    "{} α = {alpha}: regular {:.1} %",
-                    table.name(),
-                    100.0 * map.regular_fraction()
-                );
-                grid.push(
-                    MapPlot::new((0.0, map.perimeter), (-1.0, 1.0), (0.0, FTLE_MAX))
-                        .cells(size, size, map.exponents.clone())
-                        .outline(mask)
-                        .labels("s", "sin θ")
-                        .title(title),
-                );
+                grid.push(island_panel(name, &island, FTLE_MAX));
                 maps.push(json!({"table": spec, "alpha": alpha, "file": file, "perimeter": map.perimeter,
-                    "regular_fraction": map.regular_fraction(), "sampler": sampled.chaotic_fraction, "bouncing": share}));
+                    "regular_fraction": map.regular_fraction(), "sampler": sampled.chaotic_fraction, "bouncing": island.bouncing}));
             }
         }
         report.png(

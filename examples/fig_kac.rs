@@ -28,7 +28,8 @@ use spinball_analysis::{SectionBox, kac_comparison};
 use spinball_core::{Billiard, SpinLaw};
 use spinball_geometry::Table;
 use spinball_plot::{
-    Csv, Grid, Histogram, LinePlot, Marker, Series, optional, palette, run_figure,
+    Csv, Grid, KAC_COLUMNS, KAC_ORBIT_COLUMNS, LinePlot, kac_histogram, kac_orbit_rows,
+    kac_ratio_series, kac_row, palette, run_figure,
 };
 
 const NAME: &str = "fig_kac";
@@ -47,96 +48,28 @@ fn main() -> ExitCode {
         let mut grid = Grid::new(cases.len(), ALPHAS.len()).title(format!(
             "Mean return time per orbit / Kac's 1/μ(A): {orbits} orbits × {collisions} collisions"
         ));
-        let mut summary = Csv::new(&[
-            "table",
-            "region",
-            "alpha",
-            "mu",
-            "kac",
-            "mean_return",
-            "sem",
-            "ratio",
-            "ratio_sem",
-            "never_returned",
-            "orbits",
-        ]);
-        let mut per_orbit =
-            Csv::new(&["table", "alpha", "orbit", "visits", "mean_return", "ratio"]);
+        let mut summary = Csv::new(&KAC_COLUMNS);
+        let mut per_orbit = Csv::new(&KAC_ORBIT_COLUMNS);
         let mut lines = LinePlot::new()
             .x_label("spin parameter α")
             .y_label("⟨return time⟩ / Kac")
             .hline(1.0, "Kac (ergodic)");
         for (k, (spec, s, region_name)) in cases.into_iter().enumerate() {
             let table: Table = spec.parse()?;
+            let name = table.name();
             let region = SectionBox::new(s, -1.0..1.0);
-            let mut curve = Vec::new();
+            let mut runs = Vec::new();
             for alpha in ALPHAS {
                 let billiard = Billiard::new(table, SpinLaw::new(alpha)?);
-                let kac = kac_comparison(
-                    &billiard,
-                    &region,
-                    orbits,
-                    collisions,
-                    args.seed,
-                    args.threads,
-                )?;
-                let ratio = kac.ratio();
-                println!(
-                    "  {:<8} {region_name:<9} α = {alpha:<4} μ(A) = {:.4}, Kac {:.3}, mean return {}, ratio {}, never returned {} of {orbits}",
-                    table.name(),
-                    kac.probability,
-                    kac.expected,
-                    kac.mean_return
-                        .map_or("-".into(), |m| format!("{:.3} ± {:.3}", m.value, m.sem)),
-                    ratio.map_or("-".into(), |r| format!("{:.4} ± {:.4}", r.value, r.sem)),
-                    kac.never_returned
-                );
-                summary.row(&[
-                    &table.name(),
-                    &region_name,
-                    &alpha,
-                    &kac.probability,
-                    &kac.expected,
-                    &optional(kac.mean_return.map(|m| m.value)),
-                    &optional(kac.mean_return.map(|m| m.sem)),
-                    &optional(ratio.map(|r| r.value)),
-                    &optional(ratio.map(|r| r.sem)),
-                    &kac.never_returned,
-                    &orbits,
-                ]);
-                for o in &kac.orbits {
-                    let r = o.mean_return.map(|m| m / kac.expected);
-                    per_orbit.row(&[
-                        &table.name(),
-                        &alpha,
-                        &o.index,
-                        &o.visits,
-                        &optional(o.mean_return),
-                        &optional(r),
-                    ]);
-                }
-                if let Some(r) = ratio {
-                    curve.push((alpha, r.value, r.sem));
-                }
-                grid.push(
-                    Histogram::new(kac.orbit_ratios())
-                        .bins(30)
-                        .range(0.0, 2.0)
-                        .title(format!(
-                            "{} α = {alpha} ({} never back)",
-                            table.name(),
-                            kac.never_returned
-                        ))
-                        .x_label("return time / Kac")
-                        .color(palette(k))
-                        .marker(Marker::new("Kac", 1.0)),
-                );
+                let (seed, threads) = (args.seed, args.threads);
+                let kac = kac_comparison(&billiard, &region, orbits, collisions, seed, threads)?;
+                println!("  {name:<8} {region_name:<9} α = {alpha:<4} {kac}");
+                kac_row(&mut summary, name, region_name, &kac);
+                kac_orbit_rows(&mut per_orbit, name, &kac);
+                grid.push(kac_histogram(name, &kac, palette(k)));
+                runs.push(kac);
             }
-            lines = lines.series(
-                Series::new(table.name(), curve.iter().map(|c| (c.0, c.1)))
-                    .errors(curve.iter().map(|c| c.2))
-                    .color(palette(k)),
-            );
+            lines = lines.series(kac_ratio_series(name, &runs).color(palette(k)));
         }
         report.png(
             "kac.png",

@@ -22,11 +22,16 @@
 use std::f64::consts::PI;
 use std::process::ExitCode;
 
-use spinball_analysis::{SectionPoint, sections};
+use spinball_analysis::{sampled_sections, spin_slice};
 use spinball_core::{Billiard, Sampler, SpinLaw};
-use spinball_geometry::{ArcSegment, Boundary, DVec2, LineSegment, Segment, SegmentTable, Table};
+use spinball_geometry::{
+    ArcSegment, Boundary, Built, DVec2, LineSegment, Segment, SegmentTable, Table,
+};
 use spinball_plot::cli::Opt;
-use spinball_plot::{BoxError, Colorbar, Csv, Grid, MapPlot, Scatter3d, run_figure_with};
+use spinball_plot::{
+    BoxError, Colorbar, Csv, Grid, SECTION_COLUMNS, run_figure_with, section_cloud, section_panel,
+    section_rows, shell_spin,
+};
 
 const NAME: &str = "fig_sections";
 const ABOUT: &str = "Birkhoff sections (s, sin θ) coloured by spin for the built-in tables and a mushroom, a spin slice, and the stadium's 3-D section.";
@@ -53,94 +58,48 @@ fn mushroom() -> Result<SegmentTable, BoxError> {
     ])?)
 }
 
-/// The section points of `orbits` paper-sampler orbits on `table`.
-fn orbits_of<B: Boundary + Sync>(
-    table: B,
-    law: SpinLaw,
-    args: &spinball_plot::cli::FigureArgs,
-    orbits: u64,
-    collisions: u64,
-) -> Result<(f64, Vec<Vec<SectionPoint>>), BoxError> {
-    let starts: Vec<_> = (0..orbits)
-        .map(|i| Sampler::Paper.initial_state(&table, &law, args.seed, i))
-        .collect();
-    let perimeter = table.perimeter();
-    let billiard = Billiard::new(table, law);
-    Ok((
-        perimeter,
-        sections(&billiard, &starts, collisions, args.threads)?,
-    ))
-}
-
 fn main() -> ExitCode {
     let extra = [Opt::value("alpha", "A", "spin parameter α (default 0.5)")];
     run_figure_with(NAME, ABOUT, &extra, |args, report| {
         let alpha: f64 = args.extra.get_or("alpha", 0.5)?;
         let law = SpinLaw::new(alpha)?;
-        let u_max = if alpha > 0.0 { 1.0 / alpha.sqrt() } else { 1.0 };
+        let u_max = shell_spin(alpha);
         let orbits: u64 = args.pick(8, 24, 48);
         let collisions: u64 = args.pick(1_000, 5_000, 20_000);
-        let mut csv = Csv::new(&["table", "orbit", "s", "sin_theta", "u", "wall", "q"]);
+        let mut csv = Csv::new(&SECTION_COLUMNS);
         let mut grid = Grid::new(2, 3)
             .title(format!("Birkhoff sections at α = {alpha}: {orbits} orbits × {collisions} collisions, colour = spin u"))
             .colorbar(Colorbar::new("spin u (before the collision)", -u_max, u_max));
-        let mut runs = Vec::new();
+        // The built-in tables and the mushroom, each with the section
+        // points of every orbit.
+        let mut tables = Vec::new();
         for spec in TABLES {
             let table: Table = spec.parse()?;
-            runs.push((
-                table.name().to_string(),
-                orbits_of(table, law, args, orbits, collisions)?,
-            ));
+            tables.push((table.name().to_string(), Built::Table(table)));
         }
-        runs.push((
-            "mushroom".into(),
-            orbits_of(mushroom()?, law, args, orbits, collisions)?,
-        ));
-        let mut stadium_3d = Vec::new();
-        for (k, (name, (perimeter, orbit_points))) in runs.iter().enumerate() {
-            let mut points = Vec::new();
-            for (i, orbit) in orbit_points.iter().enumerate() {
-                for p in orbit {
-                    csv.row(&[name, &i, &p.s, &p.sin_theta(), &p.spin, &p.wall, &p.q]);
-                    points.push((p.s, p.sin_theta(), p.spin));
-                    if k == 0 {
-                        stadium_3d.push(([p.s, p.sin_theta(), p.spin], p.spin));
-                    }
-                }
-            }
-            grid.push(
-                MapPlot::new((0.0, *perimeter), (-1.0, 1.0), (-u_max, u_max))
-                    .points(points)
-                    .labels("s", "sin θ")
-                    .title(name.clone()),
-            );
+        tables.push(("mushroom".into(), Built::Segments(mushroom()?)));
+        let mut runs = Vec::new();
+        for (name, table) in tables {
+            let perimeter = table.perimeter();
+            let billiard = Billiard::new(table, law);
+            let (seed, threads) = (args.seed, args.threads);
+            let orbits =
+                sampled_sections(&billiard, Sampler::Paper, seed, orbits, collisions, threads)?;
+            section_rows(&mut csv, &name, &orbits);
+            grid.push(section_panel(perimeter, u_max, orbits.iter().flatten()).title(name));
+            runs.push((perimeter, orbits));
         }
         // The stadium's slice |√α u| < SLICE: the collisions near zero spin.
-        let (perimeter, stadium) = &runs[0].1;
-        let slice: Vec<_> = stadium
-            .iter()
-            .flatten()
-            .filter(|p| p.w(alpha).abs() < SLICE)
-            .map(|p| (p.s, p.sin_theta(), p.spin))
-            .collect();
-        grid.push(
-            MapPlot::new((0.0, *perimeter), (-1.0, 1.0), (-u_max, u_max))
-                .points(slice)
-                .labels("s", "sin θ")
-                .title(format!("stadium, |√α u| < {SLICE}")),
-        );
+        let (perimeter, stadium) = &runs[0];
+        let slice = spin_slice(stadium, alpha, SLICE);
+        let title = format!("stadium, |√α u| < {SLICE}");
+        grid.push(section_panel(*perimeter, u_max, &slice).title(title));
         report.png(
             "sections.png",
             &grid,
             args.pick((1500, 1000), (2100, 1400), (2700, 1800)),
         )?;
-        let cloud = Scatter3d::new(
-            stadium_3d,
-            [(0.0, *perimeter), (-1.0, 1.0), (-u_max, u_max)],
-            (-u_max, u_max),
-        )
-        .labels("s", "sin θ", "u")
-        .title(format!(
+        let cloud = section_cloud(*perimeter, u_max, stadium.iter().flatten()).title(format!(
             "stadium a = 1, α = {alpha}: section (s, sin θ, u), colour = u"
         ));
         report.png(

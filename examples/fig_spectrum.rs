@@ -24,38 +24,15 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::{Method, SpectrumEstimate, SpectrumOptions, spectrum_ensemble};
+use spinball_analysis::{Method, SpectrumOptions, spectrum_ensemble};
 use spinball_core::{Billiard, Sampler, SpinLaw};
 use spinball_geometry::Table;
-use spinball_plot::{
-    Grid, Legend, LineKind, RGBColor, Series, run_figure, spectra_csv, spectrum_plot, unit_grid,
-};
+use spinball_plot::{SpectrumPair, run_figure, spectrum_grid, spectrum_pairs_csv, unit_grid};
 
 const NAME: &str = "fig_spectrum";
 const ABOUT: &str = "Full Lyapunov spectrum vs α, stadium and Sinai, exact tangent and the paper's finite differences (paper appendix E).";
 const TABLES: [&str; 2] = ["stadium:a=1", "sinai:L=2,R=1"];
 const TITLES: [&str; 2] = ["stadium a = 1", "Sinai L = 2, R = 1"];
-const GREY: RGBColor = RGBColor(90, 90, 90);
-/// The rows of the figure: what they show, and which exponents of which
-/// method (exact tangent, then finite differences).
-const VIEWS: [&str; 4] = [
-    "exact tangent: λ₁ … λ₅",
-    "exact tangent: middle three, enlarged",
-    "finite differences: leading four",
-    "finite differences: fifth (collapsed flow direction)",
-];
-const SLOTS: [&[usize]; 4] = [&[0, 1, 2, 3, 4], &[1, 2, 3], &[0, 1, 2, 3], &[4]];
-
-/// `[exact, finite differences]` at one α.
-type Point = (f64, [SpectrumEstimate; 2]);
-
-/// The estimate without its per-trajectory spectra (for the JSON).
-fn strip(e: &SpectrumEstimate) -> SpectrumEstimate {
-    SpectrumEstimate {
-        spectra: Vec::new(),
-        ..e.clone()
-    }
-}
 
 fn main() -> ExitCode {
     run_figure(NAME, ABOUT, |args, report| {
@@ -63,7 +40,7 @@ fn main() -> ExitCode {
         let ics: u64 = args.pick(4, 50, 50);
         let collisions: u64 = args.pick(2_000, 50_000, 50_000);
         let (seed, threads) = (args.seed, args.threads);
-        let (mut results, mut records): (Vec<Vec<Point>>, _) = (Vec::new(), Vec::new());
+        let (mut results, mut records): (Vec<Vec<SpectrumPair>>, _) = (Vec::new(), Vec::new());
         for spec in TABLES {
             let table: Table = spec.parse()?;
             let mut points = Vec::new();
@@ -78,12 +55,13 @@ fn main() -> ExitCode {
                     .each_ref()
                     .map(|e| e.mean.map(|x| format!("{x:+.4}")).join(" "));
                 println!("  {spec:<14} α = {alpha:<4} exact [{exact}]  fd [{fd}]");
+                // The JSON keeps every statistic but not the per-trajectory
+                // spectra; the pairing sum is λ₁ + λ₅ (exact), λ₁ + λ₄ (fd).
                 let [exact, fd] = &pair;
-                let fd_middle = fd.mean[1].abs().max(fd.mean[2].abs());
                 records.push(json!({
                     "table": spec, "alpha": alpha,
-                    "exact": {"estimate": strip(exact), "l1_plus_l5": exact.pair_sum(0, 4), "middle_max_abs": exact.middle_max_abs()},
-                    "fd": {"estimate": strip(fd), "l1_plus_l4": fd.pair_sum(0, 3), "middle_max_abs": fd_middle},
+                    "exact": {"estimate": exact.without_spectra(), "l1_plus_l5": exact.pair_sum(0, 4), "middle_max_abs": exact.neutral_max_abs()},
+                    "fd": {"estimate": fd.without_spectra(), "l1_plus_l4": fd.pair_sum(0, 3), "middle_max_abs": fd.neutral_max_abs()},
                 }));
                 points.push((alpha, pair));
             }
@@ -92,38 +70,16 @@ fn main() -> ExitCode {
 
         let title =
             format!("Lyapunov spectrum vs α ({ics} ICs × {collisions} collisions, mean ± SEM)");
-        let mut grid = Grid::new(4, 2).title(title);
-        for (r, (what, slots)) in VIEWS.into_iter().zip(SLOTS).enumerate() {
-            let fd = usize::from(r >= 2);
-            for (title, points) in TITLES.iter().zip(&results) {
-                let pts: Vec<_> = points.iter().map(|(a, e)| (*a, &e[fd])).collect();
-                let plot =
-                    spectrum_plot(format!("{title}: {what}"), &pts, slots, ["", " (fd)"][fd]);
-                let exact = |k: usize| points.iter().map(move |(a, e)| (*a, e[0].mean[k]));
-                let dashed = |s: Series| s.line_only().kind(LineKind::Dashed).color(GREY);
-                let plot = match r {
-                    0 => plot.hline(0.0, "").y_range(-0.5, 0.85),
-                    1 => plot.hline(0.0, ""),
-                    2 => plot
-                        .series(dashed(Series::new("exact ±λ₁", exact(0))))
-                        .series(dashed(Series::unlabelled(exact(4))))
-                        .hline(0.0, "")
-                        .y_range(-0.5, 0.85),
-                    _ => plot.legend(Legend::LowerLeft),
-                };
-                grid.push(plot);
-            }
-        }
+        // The spectra of each table, named by its title (figure) or spec (CSV).
+        let named = |names: [&'static str; 2]| -> Vec<(&str, &[SpectrumPair])> {
+            names
+                .into_iter()
+                .zip(results.iter().map(Vec::as_slice))
+                .collect()
+        };
         let size = args.pick((1400, 1700), (1800, 2200), (2200, 2700));
-        report.png("spectrum.png", &grid, size)?;
-
-        let mut rows = Vec::new();
-        for (spec, points) in TABLES.iter().zip(&results) {
-            for (alpha, pair) in points {
-                rows.extend(pair.iter().map(|e| (*spec, *alpha, e)));
-            }
-        }
-        report.csv("spectrum.csv", &spectra_csv(&rows))?;
+        report.png("spectrum.png", &spectrum_grid(title, &named(TITLES)), size)?;
+        report.csv("spectrum.csv", &spectrum_pairs_csv(&named(TABLES)))?;
         let doc = json!({"ics": ics, "collisions": collisions, "results": records});
         report.json("spectrum.json", &doc)?;
         Ok(())

@@ -47,7 +47,7 @@
 use std::f64::consts::PI;
 
 use spinball_core::{Sampler, SpinLaw, State};
-use spinball_geometry::{DVec2, Stadium};
+use spinball_geometry::{Boundary, DVec2, Stadium, Table};
 
 use crate::ftle_map::FtleMap;
 use crate::trajectory::TrajectoryStats;
@@ -106,6 +106,17 @@ impl FacingFlats {
     #[must_use]
     pub fn of(stadium: &Stadium) -> Self {
         FacingFlats { a: stadium.a() }
+    }
+
+    /// The flats of `table` if it is a stadium, `None` for the other
+    /// built-in tables (which have no two facing flats with caps beside
+    /// them).
+    #[must_use]
+    pub fn of_table(table: &Table) -> Option<Self> {
+        match table {
+            Table::Stadium(s) => Some(FacingFlats::of(s)),
+            _ => None,
+        }
     }
 
     /// Half-length `a` of the flats.
@@ -221,38 +232,42 @@ impl BouncingShare {
     }
 }
 
-/// Which of an ensemble's orbits (`trajectories`, started by `sampler` from
-/// `ic_rng(seed, index)` on `stadium` under `law`, as
-/// [`Ensemble`](crate::Ensemble) draws them) are regular, and which of
-/// those the rotation predicts trapped between the flats.
-#[must_use]
-pub fn bouncing_share(
-    stadium: &Stadium,
-    law: &SpinLaw,
-    sampler: Sampler,
-    seed: u64,
-    trajectories: &[TrajectoryStats],
-    threshold: f64,
-) -> BouncingShare {
-    let flats = FacingFlats::of(stadium);
-    let mut share = BouncingShare {
-        threshold,
-        regular: 0,
-        regular_trapped: 0,
-        chaotic_trapped: 0,
-        total: trajectories.len() as u64,
-    };
-    for t in trajectories {
-        let start = sampler.initial_state(stadium, law, seed, t.index);
-        let trapped = u64::from(flats.trapped(law, &start));
-        if t.exponent <= threshold {
-            share.regular += 1;
-            share.regular_trapped += trapped;
-        } else {
-            share.chaotic_trapped += trapped;
+impl FacingFlats {
+    /// Which of an ensemble's orbits (`trajectories`, started by `sampler`
+    /// from `ic_rng(seed, index)` on `table` under `law`, as
+    /// [`Ensemble`](crate::Ensemble) draws them) are regular (FTLE ≤
+    /// `threshold`), and which of those these flats predict trapped. The
+    /// flats must be those of `table` (a stadium, or a table with the same
+    /// flats and unit caps, such as the stadium's [`Table`] form).
+    #[must_use]
+    pub fn share<B: Boundary>(
+        &self,
+        table: &B,
+        law: &SpinLaw,
+        sampler: Sampler,
+        seed: u64,
+        trajectories: &[TrajectoryStats],
+        threshold: f64,
+    ) -> BouncingShare {
+        let mut share = BouncingShare {
+            threshold,
+            regular: 0,
+            regular_trapped: 0,
+            chaotic_trapped: 0,
+            total: trajectories.len() as u64,
+        };
+        for t in trajectories {
+            let start = sampler.initial_state(table, law, seed, t.index);
+            let trapped = u64::from(self.trapped(law, &start));
+            if t.exponent <= threshold {
+                share.regular += 1;
+                share.regular_trapped += trapped;
+            } else {
+                share.chaotic_trapped += trapped;
+            }
         }
+        share
     }
-    share
 }
 
 #[cfg(test)]
@@ -281,5 +296,42 @@ mod tests {
         let vertical = State::new(DVec2::ZERO, DVec2::new(0.0, 1.0), 0.0);
         assert!(flats.trapped(&specular, &vertical));
         assert!(!flats.trapped_at(&law, 3.0, 0.0, 0.0)); // on a cap
+    }
+
+    #[test]
+    fn the_table_form_finds_the_same_flats_and_orbits() {
+        use crate::{Ensemble, Method, Threads};
+        let stadium = Stadium::new(1.0).unwrap();
+        let table = Table::Stadium(stadium);
+        assert_eq!(
+            FacingFlats::of_table(&table),
+            Some(FacingFlats::of(&stadium))
+        );
+        let sinai: Table = "sinai:L=2,R=1".parse().unwrap();
+        assert_eq!(FacingFlats::of_table(&sinai), None);
+        let law = SpinLaw::new(0.5).unwrap();
+        let run = Ensemble::new(table, law)
+            .with_method(Method::Tangent)
+            .with_ics(400)
+            .with_collisions(1_000)
+            .with_seed(3)
+            .with_threads(Threads::Fixed(1))
+            .run()
+            .unwrap();
+        let flats = FacingFlats::of_table(&table).unwrap();
+        let share = flats.share(&table, &law, Sampler::Paper, 3, &run.trajectories, 0.01);
+        // The stadium itself draws the same starts as its Table form.
+        let direct = flats.share(&stadium, &law, Sampler::Paper, 3, &run.trajectories, 0.01);
+        assert_eq!(share, direct);
+        assert_eq!(share.total, 400);
+        // About 7 % of the paper sampler's orbits are regular at α = 0.5
+        // (fig_ftle_map), most of them predicted bouncing balls; a
+        // predicted bouncing ball is never chaotic.
+        assert!(
+            share.regular >= 5 && share.regular_trapped >= 2,
+            "{share:?}"
+        );
+        assert!(share.regular_trapped <= share.regular);
+        assert_eq!(share.chaotic_trapped, 0);
     }
 }

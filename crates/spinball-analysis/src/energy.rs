@@ -256,6 +256,15 @@ impl EnergyTrace {
     pub fn initial_energy(&self) -> f64 {
         self.e0
     }
+
+    /// Share of the points whose deviation is exactly zero (the collision
+    /// map returned the start's energy to the last bit); 0 without points.
+    /// On a log axis these points need a floor of their own.
+    #[must_use]
+    pub fn exact_zero_fraction(&self) -> f64 {
+        let zeros = self.points.iter().filter(|p| p.deviation == 0.0).count();
+        zeros as f64 / self.points.len().max(1) as f64
+    }
 }
 
 impl Observer for EnergyTrace {
@@ -291,6 +300,46 @@ pub fn energy_trace<B: Boundary>(
     Ok(trace)
 }
 
+/// The paper's energy-conservation check of one start (appendix
+/// "Energy conservation"): the per-collision trace of a short run, and the
+/// long-run histories of the library's collision map and of the paper's
+/// formulas in components, from the same start.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct EnergyConservation {
+    /// `|E_n − E_0|` after every collision of the short run.
+    pub trace: EnergyTrace,
+    /// The library's map over the long run ([`energy_history`]).
+    pub library: EnergyHistory,
+    /// Paper eqs. (1)–(3) in components over the same run
+    /// ([`component_law_energy_history`]).
+    pub components: EnergyHistory,
+}
+
+/// [`energy_trace`] of `trace_collisions` collisions (every collision) and
+/// both long-run histories of `long_collisions` collisions from `start`.
+///
+/// # Errors
+/// As [`energy_history`] and [`component_law_energy_history`] (zero
+/// collisions, launch and step errors).
+pub fn energy_conservation<B: Boundary>(
+    billiard: &Billiard<B>,
+    start: State,
+    trace_collisions: u64,
+    long_collisions: u64,
+) -> Result<EnergyConservation, AnalysisError> {
+    Ok(EnergyConservation {
+        trace: energy_trace(billiard, start, trace_collisions, 1)?,
+        library: energy_history(billiard, start, long_collisions)?,
+        components: component_law_energy_history(
+            billiard.table(),
+            billiard.law(),
+            start,
+            long_collisions,
+        )?,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -323,5 +372,49 @@ mod tests {
             ours.max_relative_deviation()
         );
         assert!(component_law_energy_history(billiard.table(), billiard.law(), start, 0).is_err());
+    }
+
+    #[test]
+    fn one_check_runs_trace_and_both_histories() {
+        let billiard = Billiard::new(Stadium::new(1.0).unwrap(), SpinLaw::new(0.3).unwrap());
+        let start = State::new(DVec2::new(0.3, 0.2), DVec2::from_angle(0.8), 0.0);
+        let check = energy_conservation(&billiard, start, 400, 20_000).unwrap();
+        assert_eq!(check.trace.points.len(), 400);
+        assert_eq!(check.trace.points[9].collisions, 10);
+        let largest = check
+            .trace
+            .points
+            .iter()
+            .map(|p| p.deviation)
+            .fold(0.0, f64::max);
+        assert_eq!(check.trace.max_deviation, largest);
+        // E₀ = ½: a few ulps of ½ at most, and some collisions give it back
+        // exactly (fig_energy draws those on its floor).
+        assert!(largest < 1e-15, "{largest}");
+        let zero = check.trace.exact_zero_fraction();
+        assert!(zero > 0.0 && zero < 1.0, "{zero}");
+        assert_eq!(
+            check.library,
+            energy_history(&billiard, start, 20_000).unwrap()
+        );
+        assert_eq!(check.components.collisions(), 20_000);
+        assert!(energy_conservation(&billiard, start, 400, 0).is_err());
+    }
+
+    #[test]
+    fn exact_zero_share_of_a_trace() {
+        let law = SpinLaw::new(0.5).unwrap();
+        let start = State::new(DVec2::ZERO, DVec2::new(0.6, 0.8), 0.0);
+        let mut trace = EnergyTrace::new(law, &start, 1).unwrap();
+        assert_eq!(trace.exact_zero_fraction(), 0.0);
+        trace.points = [0.0, 1e-17, 0.0, 2e-17]
+            .iter()
+            .enumerate()
+            .map(|(i, &deviation)| EnergyPoint {
+                collisions: i as u64 + 1,
+                deviation,
+            })
+            .collect();
+        assert_eq!(trace.exact_zero_fraction(), 0.5);
     }
 }

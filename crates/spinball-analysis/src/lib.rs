@@ -105,6 +105,7 @@ pub mod work_precision;
 pub mod bouncing_ball;
 pub mod ftle_map;
 pub mod invariant_measure;
+pub mod island_map;
 pub mod return_time;
 pub mod section;
 
@@ -120,8 +121,9 @@ pub use convergence::{
 pub use curved_share::{CurvedShare, curved_share, perimeter_curved_share};
 pub use driver::{BatchProgress, Control, RunEvent, RunObserver, Silent};
 pub use energy::{
-    EnergyCheckpoint, EnergyHistory, EnergyPoint, EnergyTrace, component_law_energy_history,
-    energy_history, energy_trace, log_checkpoints,
+    EnergyCheckpoint, EnergyConservation, EnergyHistory, EnergyPoint, EnergyTrace,
+    component_law_energy_history, energy_conservation, energy_history, energy_trace,
+    log_checkpoints,
 };
 pub use engine::Engine;
 pub use ensemble::Ensemble;
@@ -165,10 +167,13 @@ pub use wall_statistics::{
 };
 pub use work_precision::{Budget, WorkPoint, work_precision};
 
-pub use bouncing_ball::{BouncingShare, FacingFlats, FlatBand, bouncing_share, pair_rotation};
+pub use bouncing_ball::{BouncingShare, FacingFlats, FlatBand, pair_rotation};
 pub use ftle_map::{FtleMap, FtleMapOptions, Slice, ftle_map};
 pub use invariant_measure::{InvariantMeasure, SectionBox};
+pub use island_map::{IslandMap, island_map};
 pub use return_time::{
     KacComparison, OrbitReturns, invariant_start, kac_comparison, orbit_returns,
 };
-pub use section::{Section, SectionPoint, section_points, sections, state_on_section};
+pub use section::{
+    Section, SectionPoint, sampled_sections, section_points, sections, spin_slice, state_on_section,
+};

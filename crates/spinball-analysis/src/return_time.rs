@@ -14,6 +14,8 @@
 //! `ds dv∥ d(√α u)` ([`InvariantMeasure`], derived there), and the starts
 //! are drawn from it, so the orbits sample phase space as μ weighs it.
 
+use std::fmt;
+
 use spinball_core::{Billiard, SpinLaw, State, ic_rng};
 use spinball_geometry::Boundary;
 
@@ -139,6 +141,28 @@ impl KacComparison {
     }
 }
 
+/// One line: `μ(A)`, Kac's `1/μ(A)`, the mean return time and its ratio to
+/// Kac's with their SEMs (`-` when fewer than two orbits returned), and
+/// how many orbits never returned.
+impl fmt::Display for KacComparison {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let mean = self
+            .mean_return
+            .map_or("-".into(), |m| format!("{:.3} ± {:.3}", m.value, m.sem));
+        let ratio = self
+            .ratio()
+            .map_or("-".into(), |r| format!("{:.4} ± {:.4}", r.value, r.sem));
+        write!(
+            f,
+            "μ(A) = {:.4}, Kac {:.3}, mean return {mean}, ratio {ratio}, never returned {} of {}",
+            self.probability,
+            self.expected,
+            self.never_returned,
+            self.orbits.len()
+        )
+    }
+}
+
 /// Run `orbits` orbits of `collisions` collisions, started from the
 /// invariant measure with streams `ic_rng(seed, i)`, and compare their mean
 /// return times to `region` with Kac's lemma.
@@ -204,4 +228,50 @@ pub fn kac_comparison<B: Boundary + Sync>(
         orbits: runs,
         mean_return,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn comparison(returns: &[Option<f64>]) -> KacComparison {
+        let orbits: Vec<OrbitReturns> = returns
+            .iter()
+            .enumerate()
+            .map(|(i, &mean_return)| OrbitReturns {
+                index: i as u64,
+                collisions: 100,
+                visits: if mean_return.is_some() { 20 } else { 1 },
+                mean_return,
+            })
+            .collect();
+        KacComparison {
+            alpha: 0.5,
+            region: SectionBox::new(0.0..1.0, -1.0..1.0),
+            probability: 0.25,
+            expected: 4.0,
+            never_returned: returns.iter().filter(|r| r.is_none()).count() as u64,
+            orbits,
+            mean_return: Some(Measurement::new(4.4, 0.2)),
+        }
+    }
+
+    #[test]
+    fn summary_line_gives_the_ratio_to_kac() {
+        let kac = comparison(&[Some(4.0), Some(4.8), None]);
+        assert_eq!(kac.orbit_ratios(), vec![1.0, 1.2]);
+        assert_eq!(
+            kac.to_string(),
+            "μ(A) = 0.2500, Kac 4.000, mean return 4.400 ± 0.200, \
+             ratio 1.1000 ± 0.0500, never returned 1 of 3"
+        );
+        let none = KacComparison {
+            mean_return: None,
+            ..comparison(&[None, None])
+        };
+        assert!(
+            none.to_string()
+                .ends_with("mean return -, ratio -, never returned 2 of 2")
+        );
+    }
 }

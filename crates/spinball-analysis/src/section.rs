@@ -23,7 +23,7 @@
 
 use std::ops::Range;
 
-use spinball_core::{Billiard, Collision, Observer, SpinLaw, State};
+use spinball_core::{Billiard, Collision, Observer, Sampler, SpinLaw, State};
 use spinball_geometry::{Boundary, WallId};
 
 use crate::error::AnalysisError;
@@ -160,6 +160,42 @@ pub fn sections<B: Boundary + Sync>(
     })
 }
 
+/// [`sections`] of `orbits` orbits drawn by `sampler`, orbit `i` from
+/// `ic_rng(seed, i)` as [`Ensemble`](crate::Ensemble) draws its initial
+/// conditions: the section points of a few typical orbits, as a
+/// Poincaré-section figure shows them.
+///
+/// # Errors
+/// As [`sections`].
+pub fn sampled_sections<B: Boundary + Sync>(
+    billiard: &Billiard<B>,
+    sampler: Sampler,
+    seed: u64,
+    orbits: u64,
+    collisions: u64,
+    threads: Threads,
+) -> Result<Vec<Vec<SectionPoint>>, AnalysisError> {
+    let (table, law) = (billiard.table(), billiard.law());
+    let starts: Vec<State> = (0..orbits)
+        .map(|i| sampler.initial_state(table, law, seed, i))
+        .collect();
+    sections(billiard, &starts, collisions, threads)
+}
+
+/// The points of `orbits` in the slice `|√α u| < half_width` of the spin
+/// (`√α u` is the spin's share of `|V|`, so the slice is the same fraction
+/// of the shell at every α), in orbit order: the two-dimensional section
+/// near zero spin, where the specular billiard's section is.
+#[must_use]
+pub fn spin_slice(orbits: &[Vec<SectionPoint>], alpha: f64, half_width: f64) -> Vec<SectionPoint> {
+    orbits
+        .iter()
+        .flatten()
+        .filter(|p| p.w(alpha).abs() < half_width)
+        .copied()
+        .collect()
+}
+
 /// A ball on the wall of `table` at arc length `s`, leaving it with
 /// tangential velocity `v_par` and spin `spin`, on the paper's energy shell
 /// `|V|² = |v|² + αu² = 1` (`E = ½`): the normal velocity is
@@ -237,5 +273,36 @@ mod tests {
             let (x, y) = p.disk(0.4);
             assert!(x * x + y * y <= 1.0 + 1e-14 && p.sin_theta().abs() <= 1.0);
         }
+    }
+
+    #[test]
+    fn sampled_circle_orbits_keep_their_angle_and_slices_cut_the_spin() {
+        use spinball_geometry::Circle;
+        // In the specular circle every collision of an orbit has the same
+        // angle of incidence (angular momentum is conserved).
+        let billiard = Billiard::new(Circle::unit(), SpinLaw::specular());
+        let orbits =
+            sampled_sections(&billiard, Sampler::Paper, 4, 3, 50, Threads::Fixed(1)).unwrap();
+        assert_eq!(orbits.len(), 3);
+        for orbit in &orbits {
+            assert_eq!(orbit.len(), 50);
+            let first = orbit[0].sin_theta();
+            assert!(orbit.iter().all(|p| (p.sin_theta() - first).abs() < 1e-12));
+        }
+        assert_ne!(orbits[0][0].sin_theta(), orbits[1][0].sin_theta());
+        // With spin: the slice keeps exactly the points with |√α u| < 0.2.
+        let spinning = Billiard::new(Stadium::new(1.0).unwrap(), SpinLaw::new(0.5).unwrap());
+        let orbits =
+            sampled_sections(&spinning, Sampler::Paper, 4, 4, 500, Threads::Fixed(1)).unwrap();
+        let slice = spin_slice(&orbits, 0.5, 0.2);
+        let inside = orbits
+            .iter()
+            .flatten()
+            .filter(|p| (0.5f64.sqrt() * p.spin).abs() < 0.2);
+        assert_eq!(slice.len(), inside.count());
+        assert!(!slice.is_empty() && slice.len() < 2000);
+        // |√α u| ≤ |V| = 1 on the paper's shell: a slice of half-width 1.01
+        // keeps every point.
+        assert_eq!(spin_slice(&orbits, 0.5, 1.01).len(), 2000);
     }
 }

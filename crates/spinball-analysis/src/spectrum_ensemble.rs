@@ -176,6 +176,30 @@ impl SpectrumEstimate {
     pub fn middle_max_abs(&self) -> f64 {
         self.mean[1..4].iter().fold(0.0, |m, x| m.max(x.abs()))
     }
+
+    /// Largest `|λ_k|` of the ensemble means over the exponents that are
+    /// zero in the dynamics: `k = 1, 2, 3` for the exact spectrum
+    /// ([`middle_max_abs`](Self::middle_max_abs)), `k = 1, 2` for the
+    /// finite-difference one (`(λ, 0, 0, −λ, λ₅)`, whose slot 4 is the
+    /// collapsed flow direction).
+    #[must_use]
+    pub fn neutral_max_abs(&self) -> f64 {
+        let end = match self.options.method {
+            Method::Tangent => 4,
+            Method::FiniteDifference { .. } => 3,
+        };
+        self.mean[1..end].iter().fold(0.0, |m, x| m.max(x.abs()))
+    }
+
+    /// This estimate without the per-trajectory spectra (for a compact
+    /// record; every statistic is kept).
+    #[must_use]
+    pub fn without_spectra(&self) -> SpectrumEstimate {
+        SpectrumEstimate {
+            spectra: Vec::new(),
+            ..self.clone()
+        }
+    }
 }
 
 /// The spectrum of initial conditions `indices` (IC `i`: state from
@@ -297,6 +321,34 @@ mod tests {
         assert_eq!((one.n_ics, one.first_index), (4, 2));
         let (s, e) = one.pair_sum(0, 3);
         assert!(s.abs() < 0.1 && e >= 0.0);
+        // Finite differences: the neutral exponents are slots 1 and 2.
+        let fd_neutral = one.mean[1].abs().max(one.mean[2].abs());
+        assert_eq!(one.neutral_max_abs(), fd_neutral);
+        assert!(fd_neutral < 0.05, "{fd_neutral}");
+        let compact = one.without_spectra();
+        assert!(compact.spectra.is_empty());
+        assert_eq!((compact.mean, compact.sem), (one.mean, one.sem));
+        assert_eq!(compact.n_ics, 4);
+    }
+
+    #[test]
+    fn exact_neutral_exponents_are_the_middle_three() {
+        let billiard = Billiard::new(Stadium::new(1.0).unwrap(), SpinLaw::new(0.5).unwrap());
+        let options = SpectrumOptions::new(2_000, Method::Tangent);
+        let est = spectrum_ensemble(
+            &billiard,
+            Sampler::Paper,
+            1,
+            0..4,
+            &options,
+            Threads::Fixed(1),
+        )
+        .unwrap();
+        assert_eq!(est.neutral_max_abs(), est.middle_max_abs());
+        // fig_spectrum (4 ICs × 2000 collisions): the middle three within
+        // 0.003 of zero, λ₁ ≈ 0.19.
+        assert!(est.neutral_max_abs() < 0.01, "{:?}", est.mean);
+        assert!(est.mean[0] > 0.1, "{:?}", est.mean);
     }
 
     #[test]

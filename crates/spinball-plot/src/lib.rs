@@ -27,6 +27,11 @@
 //!   run with rows on stdout and [`Progress`] on stderr, written with
 //!   [`write_curves`]; [`run_scan`] for families of tables with their curved
 //!   share;
+//! - figures of one analysis each, with their CSV rows: [`EnergyPanels`]
+//!   (energy conservation), [`section_panel`] (Poincaré sections),
+//!   [`island_panel`] (FTLE maps with the bouncing-ball island),
+//!   [`kac_histogram`] (return times against Kac's lemma) and
+//!   [`spectrum_grid`] (the Lyapunov spectrum against α);
 //! - [`measured`] and [`paper_markers`]: series of values ± SEM and of the
 //!   paper's numbers ([`spinball_analysis::paper`]); [`table_i_markdown`]
 //!   and friends set our convergence table beside the paper's Table I.
@@ -73,12 +78,15 @@
 mod colormap;
 mod csv;
 mod curves;
+mod energy_figure;
 mod error;
 mod figure;
 pub mod font;
 mod format;
 mod grid;
 mod histogram;
+mod island_figure;
+mod kac_figure;
 mod lines;
 mod measured;
 mod outline;
@@ -91,6 +99,7 @@ mod report;
 mod result_plots;
 mod result_tables;
 mod scan;
+mod section_figure;
 mod style;
 mod sweep_json;
 mod table_i;
@@ -102,11 +111,19 @@ pub mod cli;
 pub use colormap::{PALETTE, palette, viridis};
 pub use csv::{Csv, optional};
 pub use curves::{Curve, CurveSummary, Job, run_jobs, template, write_curves};
+pub use energy_figure::{
+    ENERGY_FLOOR, ENERGY_LONG_COLUMNS, ENERGY_TRACE_COLUMNS, EnergyPanels, energy_long_rows,
+    energy_trace_rows,
+};
 pub use error::PlotError;
 pub use figure::{BoxError, run_figure, run_figure_with};
 pub use format::format_tick;
 pub use grid::{Colorbar, Grid, Panel};
 pub use histogram::{Histogram, Marker};
+pub use island_figure::{ISLAND_COLUMNS, island_panel, island_row};
+pub use kac_figure::{
+    KAC_COLUMNS, KAC_ORBIT_COLUMNS, kac_histogram, kac_orbit_rows, kac_ratio_series, kac_row,
+};
 pub use lines::{Legend, LineKind, LinePlot, Series};
 pub use measured::{ALPHA_LABEL, LAMBDA_LABEL, measured, measured_band, paper_markers, scaled};
 pub use outline::{ARC_POINTS_PER_TURN, Loop, Outline, ToOutline};
@@ -116,11 +133,13 @@ pub use plot::{Plot, render_png};
 pub use progress::Progress;
 pub use rates::{CurveRates, relative_drop, relative_spread};
 pub use report::{Header, Report};
-pub use result_plots::{ftle_histogram, log_counts, spectrum_plot};
+pub use result_plots::{SpectrumPair, ftle_histogram, log_counts, spectrum_grid, spectrum_plot};
 pub use result_tables::{
-    histograms_csv, q_pairs_csv, q_populations, spectra_csv, summary_csv, trajectories_csv,
+    histograms_csv, q_pairs_csv, q_populations, spectra_csv, spectrum_pairs_csv, summary_csv,
+    trajectories_csv,
 };
 pub use scan::{Scan, ShareRow, curved_shares, run_scan, share_range, shares_csv, write_shares};
+pub use section_figure::{SECTION_COLUMNS, section_cloud, section_panel, section_rows, shell_spin};
 pub use style::Style;
 pub use sweep_json::{SweepDocument, SweepPoint};
 pub use table_i::{

@@ -1,5 +1,6 @@
 //! Plot pieces made from analysis results: the paper's FTLE histogram
-//! panel, Lyapunov spectra against α, and the counts of a log-binned
+//! panel, Lyapunov spectra against α (one panel, or the paper's grid of
+//! exact and finite-difference spectra), and the counts of a log-binned
 //! analysis histogram as points.
 //!
 //! These pictures recur (every FTLE figure shows a distribution with its
@@ -25,11 +26,29 @@ use spinball_analysis::{AnalysisError, LyapunovEstimate, SpectrumEstimate};
 
 use crate::RGBColor;
 use crate::colormap::palette;
+use crate::grid::Grid;
 use crate::histogram::{Histogram, Marker};
 use crate::lines::{Legend, LineKind, LinePlot, Series};
 
 /// Subscripts of the five exponents.
 const SUB: [&str; 5] = ["₁", "₂", "₃", "₄", "₅"];
+
+/// The spectra of one table at one α: `[exact tangent, finite
+/// differences]`.
+pub type SpectrumPair = (f64, [SpectrumEstimate; 2]);
+
+/// The rows of [`spectrum_grid`]: what they show, which exponents, and
+/// whether of the finite-difference spectra.
+const SPECTRUM_VIEWS: [(&str, &[usize], bool); 4] = [
+    ("exact tangent: λ₁ … λ₅", &[0, 1, 2, 3, 4], false),
+    ("exact tangent: middle three, enlarged", &[1, 2, 3], false),
+    ("finite differences: leading four", &[0, 1, 2, 3], true),
+    (
+        "finite differences: fifth (collapsed flow direction)",
+        &[4],
+        true,
+    ),
+];
 
 /// The FTLE distribution of `estimate` as a probability density (60 bins)
 /// with the paper's three lines: mean (solid), median (dashed) and, if any
@@ -96,6 +115,39 @@ pub fn spectrum_plot(
     plot
 }
 
+/// The paper's spectrum figure: a column per table (`(title, spectra
+/// against α)`) and four rows, the exact spectrum, its middle three
+/// enlarged, the finite-difference leading four (with the exact `±λ₁`
+/// dashed) and the finite-difference fifth exponent.
+#[must_use]
+pub fn spectrum_grid(title: impl Into<String>, tables: &[(&str, &[SpectrumPair])]) -> Grid {
+    let grey = RGBColor(90, 90, 90);
+    let mut grid = Grid::new(SPECTRUM_VIEWS.len(), tables.len()).title(title);
+    for (r, (what, slots, fd)) in SPECTRUM_VIEWS.into_iter().enumerate() {
+        for (name, points) in tables {
+            let column: Vec<_> = points
+                .iter()
+                .map(|(a, e)| (*a, &e[usize::from(fd)]))
+                .collect();
+            let suffix = if fd { " (fd)" } else { "" };
+            let plot = spectrum_plot(format!("{name}: {what}"), &column, slots, suffix);
+            let exact = |k: usize| points.iter().map(move |(a, e)| (*a, e[0].mean[k]));
+            let dashed = |s: Series| s.line_only().kind(LineKind::Dashed).color(grey);
+            grid.push(match r {
+                0 => plot.hline(0.0, "").y_range(-0.5, 0.85),
+                1 => plot.hline(0.0, ""),
+                2 => plot
+                    .series(dashed(Series::new("exact ±λ₁", exact(0))))
+                    .series(dashed(Series::unlabelled(exact(4))))
+                    .hline(0.0, "")
+                    .y_range(-0.5, 0.85),
+                _ => plot.legend(Legend::LowerLeft),
+            });
+        }
+    }
+    grid
+}
+
 /// The counts of `histogram` (binned in some `log10 x`) as `(bin centre,
 /// count)` points from its first to its last occupied bin; the underflow
 /// (exact zeros and values below the bins) as a separate point at
@@ -146,6 +198,17 @@ mod tests {
         let plot = spectrum_plot("t", &[(0.0, &a), (1.0, &b)], &[1, 2, 3], " (x)");
         assert!(plot.validate().is_ok());
         assert!(spectrum_plot("t", &[], &[0], "").validate().is_err());
+        let pairs = [(0.0, [a.clone(), a]), (1.0, [b.clone(), b])];
+        let grid = spectrum_grid("spectra", &[("one", &pairs), ("two", &pairs[..1])]);
+        assert!(grid.validate().is_ok());
+        // Four rows of two tables, row by row.
+        let text = format!("{grid:?}");
+        let at = |t: &str| text.find(t).unwrap_or_else(|| panic!("no panel {t}"));
+        assert!(at("one: exact tangent: λ₁ … λ₅") < at("two: exact tangent: λ₁ … λ₅"));
+        assert!(at("two: exact tangent: λ₁ … λ₅") < at("one: exact tangent: middle three"));
+        assert!(at("two: finite differences: leading four") < at("one: finite differences: fifth"));
+        assert_eq!(text.matches("exact ±λ₁").count(), 2);
+        assert_eq!(text.matches("λ₅ (fd)").count(), 2);
     }
 
     #[test]

@@ -24,6 +24,7 @@ use spinball_analysis::{
 };
 
 use crate::csv::{Csv, optional};
+use crate::result_plots::SpectrumPair;
 
 /// Every trajectory of `estimates`: α, initial-condition index, FTLE, the
 /// exponent per collision, flight time and collisions.
@@ -116,6 +117,19 @@ pub fn spectra_csv(rows: &[(&str, f64, &SpectrumEstimate)]) -> Csv {
         );
     }
     csv
+}
+
+/// [`spectra_csv`] of the exact and finite-difference spectra of tables
+/// (`(spec, spectra against α)`): per table and α, the exact row, then the
+/// finite-difference one.
+pub fn spectrum_pairs_csv(tables: &[(&str, &[SpectrumPair])]) -> Csv {
+    let mut rows = Vec::new();
+    for (spec, points) in tables {
+        for (alpha, pair) in points.iter() {
+            rows.extend(pair.iter().map(|e| (*spec, *alpha, e)));
+        }
+    }
+    spectra_csv(&rows)
 }
 
 /// Every recorded pair of consecutive collisions: the collision, the
@@ -216,6 +230,34 @@ mod tests {
         assert_eq!(fields[..5], ["stadium:a=1", "0.5", "tangent", "3", "200"]);
         assert_eq!(fields[5].parse::<f64>().unwrap(), e.mean[0]);
         assert_eq!(fields[14].parse::<f64>().unwrap(), e.sem[4]);
+        let fd = spectrum_ensemble(
+            &billiard,
+            Sampler::Paper,
+            1,
+            0..3,
+            &SpectrumOptions::new(200, Method::default()),
+            Threads::Fixed(1),
+        )
+        .unwrap();
+        let pairs = [(0.5, [e.clone(), fd.clone()]), (0.7, [e, fd])];
+        let csv = spectrum_pairs_csv(&[("stadium:a=1", &pairs), ("sinai", &pairs[..1])]);
+        let methods: Vec<String> = csv
+            .as_str()
+            .lines()
+            .skip(1)
+            .map(|l| l.split(',').take(3).collect::<Vec<_>>().join(","))
+            .collect();
+        assert_eq!(
+            methods,
+            [
+                "stadium:a=1,0.5,tangent",
+                "stadium:a=1,0.5,fd",
+                "stadium:a=1,0.7,tangent",
+                "stadium:a=1,0.7,fd",
+                "sinai,0.5,tangent",
+                "sinai,0.5,fd",
+            ]
+        );
     }
 
     #[test]
