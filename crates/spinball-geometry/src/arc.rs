@@ -159,28 +159,32 @@ impl ArcSegment {
     /// The circle root is the exit for a concave arc (the larger root) and
     /// the entry for a convex one (the smaller root, moving towards the
     /// circle). A root behind the ball counts (as flight time 0) only for a
-    /// ball on the circle to rounding (`|d|² − R²` within `128 ε R²`); a ball
-    /// clear of the circle whose root is behind it does not meet the arc.
-    /// The contact must then lie on the arc: on the arc's side of its chord,
-    /// within `slack` (times the chord's length), tested on the unsnapped
-    /// contact `origin + v·t` multiplied through by `|v|²`:
-    /// `side · chord × ((origin − start)·|v|² + v·(t|v|²)) ≥ −slack·|chord|·|v|²`.
+    /// ball on the circle to rounding (`|d|² − R²` within `128 ε R²` on the
+    /// arc's side); a ball clear of the circle whose root is behind it does
+    /// not meet the arc. The contact must then lie on the arc: on the arc's
+    /// side of its chord, within `slack` (times the chord's length), tested
+    /// on the unsnapped contact relative to the centre, `d + v·t`,
+    /// multiplied through by `|v|²`:
+    /// `side · chord × (d|v|² + v·t|v|²) ≥ (−slack·|chord| − lift)·|v|²`,
+    /// where `lift = side · chord × (centre − start)` moves the chord's
+    /// line through the centre.
     #[inline]
     #[must_use]
     pub fn approach(&self, origin: DVec2, velocity: DVec2, slack: f64) -> Option<Approach> {
+        let touch = touch(self.radius);
         let root = if self.is_concave() {
-            concave_root(self.center, self.radius, origin, velocity)?
+            let r = concave_root(self.center, self.radius, origin, velocity)?;
+            (r.num >= 0.0 || r.c <= touch).then_some(r)?
         } else {
-            convex_root(self.center, self.radius, origin, velocity)?
+            let r = convex_root(self.center, self.radius, origin, velocity)?;
+            (r.num >= 0.0 || r.c >= -touch).then_some(r)?
         };
-        if root.num < 0.0 && root.c.abs() > touch(self.radius) {
-            return None;
-        }
         let num = root.num.max(0.0);
         if !self.full {
-            let q = (origin - self.start()) * root.a + velocity * num;
-            let reach = -slack * self.chord.length() * root.a;
-            if !(self.side * self.chord.perp_dot(q) >= reach) {
+            let q = root.d * root.a + velocity * num;
+            let lift = self.side * self.chord.perp_dot(self.center - self.start());
+            let floor = (-slack * self.chord.length() - lift) * root.a;
+            if !(self.side * self.chord.perp_dot(q) >= floor) {
                 return None;
             }
         }

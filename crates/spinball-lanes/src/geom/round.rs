@@ -156,6 +156,9 @@ pub(super) struct Root<L: Lanes> {
     pub dy: L,
     /// `|d|² − r²`: how far off the circle the ball is.
     pub c: L,
+    /// `c <= 128 ε r²` (a concave root computes it; a convex one leaves it
+    /// unset, all false).
+    pub inside: L::Mask,
 }
 
 /// `concave_root` of `spinball-geometry`: the larger root for a ball inside
@@ -176,7 +179,8 @@ pub(super) fn concave_root<L: Lanes, const ON_AXIS: bool>(
     let c = (dx * dx + dy * dy) - k.r2;
     let disc = b * b - a * c;
     // On the circle to rounding: touch at once rather than miss.
-    let disc = L::select(c.le(L::splat(k.touch)), disc.max(zero), disc);
+    let inside = c.le(L::splat(k.touch));
+    let disc = L::select(inside, disc.max(zero), disc);
     let ok = disc.ge(zero).and(a.gt(zero));
     Root {
         ok,
@@ -184,6 +188,7 @@ pub(super) fn concave_root<L: Lanes, const ON_AXIS: bool>(
         dx,
         dy,
         c,
+        inside,
     }
 }
 
@@ -205,6 +210,7 @@ pub(super) fn convex_root<L: Lanes>(cx: L, cy: L, k: &Round, ray: &Ray<L>) -> Ro
         dx,
         dy,
         c,
+        inside: zero.ne(zero),
     }
 }
 

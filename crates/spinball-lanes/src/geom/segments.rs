@@ -115,15 +115,12 @@ struct Curve {
     sign: f64,
     /// A full circle covers every contact.
     full: bool,
-    /// Start point.
-    sx: f64,
-    sy: f64,
     /// The chord from start to end, times the side of it the arc lies on.
     chx: f64,
     chy: f64,
-    /// `−slack · |chord|`: how far behind the chord a contact still counts
-    /// (times `|v|²` in the test).
-    reach: f64,
+    /// `−slack · |chord| − lift`: how far behind the chord's line moved
+    /// through the centre a contact still counts (times `|v|²` in the test).
+    floor: f64,
 }
 
 impl Curve {
@@ -137,6 +134,7 @@ impl Curve {
         let side = chord.perp_dot((mid - from) * r).signum();
         let full = a.sweep().abs() >= TAU * (1.0 - 1e-12);
         let (c, start) = (a.center(), a.start());
+        let lift = side * chord.perp_dot(c - start);
         Curve {
             id: id as f64,
             concave: a.is_concave(),
@@ -146,13 +144,11 @@ impl Curve {
             curvature: a.curvature(),
             sign: if a.is_concave() { -1.0 } else { 1.0 },
             full,
-            sx: start.x,
-            sy: start.y,
             // `side` is ±1: scaling the chord by it negates the cross
             // product exactly.
             chx: side * chord.x,
             chy: side * chord.y,
-            reach: -slack * chord.length(),
+            floor: -slack * chord.length() - lift,
         }
     }
 }
@@ -160,8 +156,9 @@ impl Curve {
 /// One step of the flat walls' visit order.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Step {
-    /// A flat wall.
-    One(Flat),
+    /// A flat wall; `true` if the step before is a flat wall with bitwise
+    /// the same normal (its `−(v·n)` and `v·dir` are then reused).
+    One(Flat, bool),
     /// Two flat walls with opposite normals (lower id first).
     Pair(Flat, Flat),
 }
@@ -191,14 +188,19 @@ impl LaneSegments {
             Segment::Line(l) => Flat::new(i, l, slack),
             Segment::Arc(_) => unreachable!("flat visits are lines"),
         };
-        let steps = table
-            .flat_visits()
-            .iter()
-            .map(|v| match *v {
-                FlatVisit::One(i) => Step::One(flat(i)),
+        let mut steps: Vec<Step> = Vec::new();
+        for v in table.flat_visits() {
+            steps.push(match *v {
+                FlatVisit::One(i) => {
+                    let f = flat(i);
+                    let bits = |w: &Flat| (w.nx.to_bits(), w.ny.to_bits());
+                    let shares =
+                        matches!(steps.last(), Some(Step::One(p, _)) if bits(p) == bits(&f));
+                    Step::One(f, shares)
+                }
                 FlatVisit::Pair(i, j) => Step::Pair(flat(i), flat(j)),
-            })
-            .collect();
+            });
+        }
         let arcs = walls
             .iter()
             .enumerate()
@@ -254,10 +256,11 @@ fn clamp<L: Lanes>(x: L, lo: L, hi: L) -> L {
     L::select(x.gt(hi), hi, x)
 }
 
-/// `LineSegment::approach`, lane by lane, given `w = −(v·n)`: the lanes
-/// where it returns `Some`, and the undivided flight time's numerator.
+/// `LineSegment::approach`, lane by lane, given `w = −(v·n)` and
+/// `vd = v·dir`: the lanes where it returns `Some`, and the undivided
+/// flight time's numerator.
 #[inline(always)]
-fn approach<L: Lanes>(f: &FlatLanes<L>, w: L, lo: f64, ray: &Ray<L>) -> (L::Mask, L) {
+fn approach<L: Lanes>(f: &FlatLanes<L>, w: L, vd: L, lo: f64, ray: &Ray<L>) -> (L::Mask, L) {
     let zero = L::splat(0.0);
     let lo = L::splat(lo);
     let relx = ray.x - f.sx;
@@ -266,7 +269,7 @@ fn approach<L: Lanes>(f: &FlatLanes<L>, w: L, lo: f64, ray: &Ray<L>) -> (L::Mask
     // Moving into the wall, not behind it (a NaN distance is not "behind").
     let ok = w.gt(zero).and(dist.lt(lo).not());
     let dist = dist.max(zero);
-    let along_w = (relx * f.dx + rely * f.dy) * w + (ray.vx * f.dx + ray.vy * f.dy) * dist;
+    let along_w = (relx * f.dx + rely * f.dy) * w + vd * dist;
     let ok = ok.and(along_w.ge(lo * w)).and(along_w.le(f.hi * w));
     (ok, dist)
 }
@@ -390,25 +393,23 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
     fn approach_arc<L: Lanes>(&self, a: &Curve, ray: &Ray<L>) -> (L::Mask, L) {
         let zero = L::splat(0.0);
         let (cx, cy) = (L::splat(a.cx), L::splat(a.cy));
-        let root = if a.concave {
-            concave_root::<L, false>(cx, cy, &a.round, ray)
-        } else {
-            convex_root(cx, cy, &a.round, ray)
-        };
         // A root behind a ball clear of the circle is no hit.
-        let behind = root
-            .num
-            .lt(zero)
-            .and(root.c.abs().gt(L::splat(a.round.touch)));
-        let ok = root.ok.and(behind.not());
+        let (root, on) = if a.concave {
+            let root = concave_root::<L, false>(cx, cy, &a.round, ray);
+            (root, root.inside)
+        } else {
+            let root = convex_root(cx, cy, &a.round, ray);
+            (root, root.c.ge(L::splat(-a.round.touch)))
+        };
+        let ok = root.ok.and(root.num.ge(zero).or(on));
         let num = root.num.max(zero);
         if a.full {
             return (ok, num);
         }
-        let qx = (ray.x - a.sx) * ray.a + ray.vx * num;
-        let qy = (ray.y - a.sy) * ray.a + ray.vy * num;
+        let qx = root.dx * ray.a + ray.vx * num;
+        let qy = root.dy * ray.a + ray.vy * num;
         let cross = qy * a.chx - qx * a.chy;
-        (ok.and(cross.ge(L::splat(a.reach) * ray.a)), num)
+        (ok.and(cross.ge(L::splat(a.floor) * ray.a)), num)
     }
 
     /// The earliest arc of every lane, in id order: only a strictly
@@ -458,12 +459,17 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
             dy: zero,
             length: zero,
         };
+        // `−(v·n)` and `v·dir` of the last flat wall cast alone.
+        let (mut w, mut vd) = (zero, zero);
         for step in self.steps {
             match step {
-                Step::One(f) => {
-                    let w = vx * f.mnx + vy * f.mny;
+                Step::One(f, shares) => {
                     let c = f.lanes::<L>();
-                    let (ok, dist) = approach(&c, w, self.lo, ray);
+                    if !shares {
+                        w = vx * f.mnx + vy * f.mny;
+                        vd = vx * c.dx + vy * c.dy;
+                    }
+                    let (ok, dist) = approach(&c, w, vd, self.lo, ray);
                     // Every wall visited before this one has a lower id, so
                     // a tie never goes to it: strictly earlier suffices.
                     let take = ok.and(best.beaten::<false>(dist, w, c.id));
@@ -488,7 +494,8 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
                         hi: sel(ca.hi, cb.hi),
                     };
                     let w = wa.abs();
-                    let (ok, dist) = approach(&c, w, self.lo, ray);
+                    let vd = vx * c.dx + vy * c.dy;
+                    let (ok, dist) = approach(&c, w, vd, self.lo, ray);
                     let take = ok.and(best.beaten::<true>(dist, w, c.id));
                     best.keep(take, dist, w, &c);
                 }
@@ -687,7 +694,9 @@ pub(crate) mod tests {
         let ids = |t: &SegmentTable| -> Vec<String> {
             let l = LaneSegments::new(t);
             let flats = l.steps.iter().map(|st| match st {
-                Step::One(f) => format!("{}", f.id),
+                Step::One(f, false) => format!("{}", f.id),
+                // Reuses the previous wall's `−(v·n)` and `v·dir`.
+                Step::One(f, true) => format!("{}~", f.id),
                 Step::Pair(a, b) => format!("{}+{}", a.id, b.id),
             });
             let arcs = l.arcs.iter().map(|c| format!("arc{}", c.id));
@@ -697,10 +706,11 @@ pub(crate) mod tests {
         assert_eq!(ids(&stadium(1.0)), ["0+2", "arc1", "arc3"]);
         // Sinai: (0, 2) and (1, 3), then the hole.
         assert_eq!(ids(&sinai(2.0, 1.0)), ["0+2", "1+3", "arc4"]);
-        // Mushroom: only the stem's sides (1, 5) face opposite ways.
+        // Mushroom: only the stem's sides (1, 5) face opposite ways; the
+        // stem's floor (0) and the cap's floor (2, 4) face the same way.
         assert_eq!(
             ids(&mushroom(1.0, 0.3, 1.0)),
-            ["0", "2", "4", "1+5", "arc3"]
+            ["0", "2~", "4~", "1+5", "arc3"]
         );
     }
 
