@@ -22,12 +22,12 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::{Ensemble, Method, lcn_trace, paper};
-use spinball_core::{Billiard, SpinLaw, State, ic_rng};
+use spinball_analysis::{Method, lcn_traces, paper};
+use spinball_core::State;
 use spinball_geometry::{DVec2, Table};
 use spinball_plot::{
-    Csv, Grid, Legend, LineKind, LinePlot, RGBColor, Series, TableIRecord, TableIRow, run_figure,
-    table_i_csv, table_i_markdown, table_i_plot, viridis,
+    Csv, Grid, LCN_TRACE_COLUMNS, TableIRecord, lcn_finals, lcn_trace_panel, lcn_trace_rows,
+    run_figure, table_i_csv, table_i_grid, table_i_markdown, table_i_rows,
 };
 
 const NAME: &str = "fig_convergence";
@@ -52,69 +52,38 @@ fn main() -> ExitCode {
         let quick_columns = vec![500, 1_000, 2_000, 5_000];
         let checkpoints = args.pick(quick_columns, paper_columns.clone(), paper_columns);
 
-        // 1. LCN traces.
+        // 1. LCN traces, the shadow direction from initial condition 0 of the seed.
         let mut grid = Grid::new(2, 2).title(format!(
             "Single-trajectory LCN traces ({trace_len} collisions, θ₀ = {THETA0}, u₀ = {U0}, finite differences)"
         ));
-        let mut csv = Csv::new(&["table", "alpha", "collisions", "time", "lambda"]);
+        let mut csv = Csv::new(&LCN_TRACE_COLUMNS);
         let mut finals = Vec::new();
         for (spec, title, p) in TRACE_TABLES {
             let table: Table = spec.parse()?;
             let start = State::new(DVec2::from(p), DVec2::from_angle(THETA0), U0);
-            let (x, y) = ("time t   (speed |v₀| = 1)", "running λ(t) (1/time)");
-            let mut plot = LinePlot::with_axes(title, x, y).log_x(true).log_y(true);
-            let mut t_max: f64 = 1.0;
-            for (k, alpha) in TRACE_ALPHAS.into_iter().enumerate() {
-                let billiard = Billiard::new(table, SpinLaw::new(alpha)?);
-                let mut rng = ic_rng(args.seed, 0); // the shadow direction
-                let trace =
-                    lcn_trace(&billiard, start, trace_len, Method::default(), 40, &mut rng)?;
-                for p in &trace.points {
-                    csv.row(&[&spec, &alpha, &p.collisions, &p.time, &p.exponent]);
-                    t_max = t_max.max(p.time);
-                }
-                let points = trace.points.iter().map(|p| (p.time, p.exponent));
-                let color = viridis(k as f64 / 4.0 * 0.9);
-                let line = Series::new(format!("α = {alpha}"), points).line_only();
-                plot = plot.series(line.line_width(3).color(color));
-                let collisions = trace.collisions;
-                finals.push(json!({"table": spec, "alpha": alpha, "collisions": collisions, "final_lambda": trace.exponent}));
-            }
-            if matches!(table, Table::Circle(_) | Table::Rectangle(_)) {
-                // A 1/t guide through λ = 1 at t = 1.
-                let guide = Series::new("∝ 1/t", [(1.0, 1.0), (t_max, 1.0 / t_max)]).line_only();
-                plot = plot.series(guide.kind(LineKind::Dashed).color(RGBColor(120, 120, 120)));
-            }
-            grid.push(plot.legend(Legend::LowerLeft));
+            let (method, seed) = (Method::default(), args.seed);
+            let traces = lcn_traces(&table, start, &TRACE_ALPHAS, trace_len, method, 40, seed)?;
+            lcn_trace_rows(&mut csv, spec, &traces);
+            finals.extend(lcn_finals(spec, &traces));
+            // Integrable tables get a 1/t guide.
+            let integrable = matches!(table, Table::Circle(_) | Table::Rectangle(_));
+            grid.push(lcn_trace_panel(title, &traces, integrable));
         }
         let size = args.pick((1400, 1050), (1800, 1350), (2200, 1650));
         report.png("lcn_traces.png", &grid, size)?;
         report.csv("lcn_traces.csv", &csv)?;
 
         // 2. Table I: the same initial conditions in every column.
-        let mut rows = Vec::new();
-        for (spec, name) in TABLE_TABLES {
-            for alpha in TABLE_ALPHAS {
-                let ensemble = Ensemble::new(spec.parse::<Table>()?, SpinLaw::new(alpha)?)
-                    .with_ics(ics)
-                    .with_seed(args.seed)
-                    .with_threads(args.threads);
-                let row = TableIRow::measure(spec, name, &ensemble, &checkpoints)?;
-                println!("  {row}");
-                rows.push(row);
-            }
-        }
+        let rows = table_i_rows(args, &TABLE_TABLES, &TABLE_ALPHAS, ics, &checkpoints)?;
         let md = table_i_markdown(&rows, ics, args.seed);
         report.csv("convergence_table.csv", &table_i_csv(&rows))?;
         report.text("convergence_table.md", &md)?;
-        let mut grid = Grid::new(1, 2).title(format!(
-            "Table I: our λ minus the paper's ({ics} ICs per point, ± our SEM; paper rounds to ±0.0005)"
-        ));
-        for (spec, name) in TABLE_TABLES {
-            grid.push(table_i_plot(&rows, spec, name));
-        }
         let size = args.pick((1400, 650), (1800, 800), (2200, 1000));
-        report.png("convergence_table.png", &grid, size)?;
+        report.png(
+            "convergence_table.png",
+            &table_i_grid(&rows, &TABLE_TABLES, ics),
+            size,
+        )?;
         let traces = json!({"collisions": trace_len, "theta0": THETA0, "u0": U0, "alphas": TRACE_ALPHAS, "final": finals});
         let records: Vec<TableIRecord> = rows.iter().map(TableIRecord::from).collect();
         let table_i = json!({"ics": ics, "checkpoints": checkpoints, "method": Method::default(), "sampler": "paper", "rows": records});

@@ -24,7 +24,7 @@ use std::fmt::Write as _;
 use std::time::Instant;
 
 use rand::Rng;
-use spinball_core::{Billiard, Sampler, State};
+use spinball_core::{Billiard, Sampler, SpinLaw, State, ic_rng};
 use spinball_geometry::Boundary;
 
 use crate::engine::Engine;
@@ -118,6 +118,41 @@ pub fn lcn_trace<B: Boundary, R: Rng + ?Sized>(
         collisions,
         method,
     })
+}
+
+/// [`lcn_trace`] of the trajectory from `start` on `table` at each of
+/// `alphas` (the paper's figure of LCN traces: one start, five α), as
+/// `(α, trace)`. Every α draws its perturbation direction from a fresh
+/// `ic_rng(seed, 0)`, so the traces differ only by the spin law.
+///
+/// # Errors
+/// [`AnalysisError::SpinLaw`] for an α outside `[0, ∞)`; otherwise as
+/// [`lcn_trace`].
+pub fn lcn_traces<B: Boundary + Clone>(
+    table: &B,
+    start: State,
+    alphas: &[f64],
+    collisions: u64,
+    method: Method,
+    points_per_decade: u32,
+    seed: u64,
+) -> Result<Vec<(f64, LcnTrace)>, AnalysisError> {
+    alphas
+        .iter()
+        .map(|&alpha| {
+            let billiard = Billiard::new(table.clone(), SpinLaw::new(alpha)?);
+            let mut rng = ic_rng(seed, 0);
+            let trace = lcn_trace(
+                &billiard,
+                start,
+                collisions,
+                method,
+                points_per_decade,
+                &mut rng,
+            )?;
+            Ok((alpha, trace))
+        })
+        .collect()
 }
 
 /// Per-trajectory results of initial condition `index` after each of
@@ -297,8 +332,6 @@ pub fn format_mean_sem(mean: f64, sem: f64, decimals: usize) -> String {
 mod tests {
     use super::*;
     use crate::trajectory::trajectory_ftle;
-    use spinball_core::SpinLaw;
-    use spinball_core::ic_rng;
     use spinball_geometry::{Circle, DVec2, Stadium};
 
     #[test]
@@ -383,5 +416,27 @@ mod tests {
     fn mean_sem_notation() {
         assert_eq!(format_mean_sem(0.147, 0.0012, 3), "0.147(1)");
         assert_eq!(format_mean_sem(0.5, 0.2, 3), "0.500(±0.200)");
+    }
+
+    #[test]
+    fn traces_per_alpha_repeat_single_traces() {
+        let stadium = Stadium::new(1.0).unwrap();
+        let start = State::new(DVec2::new(0.3, 0.2), DVec2::from_angle(0.8), 0.0);
+        let method = Method::default();
+        let traces = lcn_traces(&stadium, start, &[0.0, 0.5], 5_000, method, 10, 3).unwrap();
+        assert_eq!(traces.len(), 2);
+        for (alpha, trace) in &traces {
+            let billiard = Billiard::new(stadium, SpinLaw::new(*alpha).unwrap());
+            let single = lcn_trace(&billiard, start, 5_000, method, 10, &mut ic_rng(3, 0)).unwrap();
+            assert_eq!(*trace, single, "α = {alpha}");
+        }
+        // The chaotic stadium at α = 0 levels off near λ ≈ 0.43 (paper §IV,
+        // Fig. 2); one trajectory of 5000 collisions is within 0.15 of it.
+        assert!(
+            (traces[0].1.exponent - 0.43).abs() < 0.15,
+            "{}",
+            traces[0].1.exponent
+        );
+        assert!(lcn_traces(&stadium, start, &[-1.0], 100, method, 10, 3).is_err());
     }
 }

@@ -116,7 +116,7 @@ pub use collision_rate::{
     liouville_collision_rate, per_collision_exponent, rate_summary,
 };
 pub use convergence::{
-    LcnTrace, convergence_estimates, format_mean_sem, lcn_trace, trajectory_checkpoints,
+    LcnTrace, convergence_estimates, format_mean_sem, lcn_trace, lcn_traces, trajectory_checkpoints,
 };
 pub use curved_share::{CurvedShare, curved_share, perimeter_curved_share};
 pub use driver::{BatchProgress, Control, RunEvent, RunObserver, Silent};
@@ -163,7 +163,8 @@ pub use stats::{
 pub use stop_rule::StopRule;
 pub use trajectory::{TrajectoryStats, ftle_trajectories, trajectories_csv, trajectory_ftle};
 pub use wall_statistics::{
-    DeltaQPopulation, TransitionRule, WallStatistics, wall_statistics, wall_statistics_ensemble,
+    DeltaQPopulation, TransitionFractions, TransitionRule, WallStatistics, wall_statistics,
+    wall_statistics_ensemble,
 };
 pub use work_precision::{Budget, WorkPoint, work_precision};
 

@@ -165,6 +165,23 @@ impl QPairStatistics {
         (n > 0).then(|| self.population(class).count as f64 / n as f64)
     }
 
+    /// The share of each class, in the order of [`PairClass::ALL`] (`None`
+    /// before any pair).
+    #[must_use]
+    pub fn shares(&self) -> [(PairClass, Option<f64>); 3] {
+        PairClass::ALL.map(|c| (c, self.share(c)))
+    }
+
+    /// These statistics without the recorded pairs (for a compact record;
+    /// every population is kept).
+    #[must_use]
+    pub fn without_pairs(&self) -> QPairStatistics {
+        QPairStatistics {
+            pairs: Vec::new(),
+            ..self.clone()
+        }
+    }
+
     /// Forget the last collision (call between trajectories).
     pub fn end_trajectory(&mut self) {
         self.last = None;
@@ -290,5 +307,25 @@ mod tests {
         assert!((total - 1.0).abs() < 1e-12);
         assert!(q.share(PairClass::SameWall).unwrap() > 0.05);
         assert!(q_pair_statistics(&billiard, start, 0, false).is_err());
+    }
+
+    #[test]
+    fn shares_and_compact_record_of_a_recorded_run() {
+        let billiard = Billiard::new(Stadium::new(1.0).unwrap(), SpinLaw::new(0.5).unwrap());
+        let start = Sampler::Paper.initial_state(billiard.table(), billiard.law(), 1, 0);
+        let q = q_pair_statistics(&billiard, start, 2_000, true).unwrap();
+        let shares = q.shares();
+        assert_eq!(shares.map(|(c, _)| c), PairClass::ALL);
+        // Each share counts the recorded pairs of its class.
+        for (class, share) in shares {
+            let n = q.pairs.iter().filter(|p| p.class == class).count();
+            assert_eq!(share, Some(n as f64 / 1_999.0), "{class:?}");
+        }
+        let compact = q.without_pairs();
+        assert!(compact.pairs.is_empty() && q.pairs.len() == 1_999);
+        assert_eq!(compact.populations, q.populations);
+        assert_eq!(compact.through_collision, q.through_collision);
+        let empty = QPairStatistics::new(billiard.law(), false);
+        assert_eq!(empty.shares()[0], (PairClass::SameWall, None));
     }
 }

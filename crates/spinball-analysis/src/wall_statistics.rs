@@ -31,6 +31,19 @@ pub enum TransitionRule {
     Wall,
 }
 
+/// `f_trans` under each [`TransitionRule`] (`None` before any pair), from
+/// [`WallStatistics::transition_fractions`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct TransitionFractions {
+    /// Under [`TransitionRule::Direction`] (the paper's stadium band).
+    pub direction: Option<f64>,
+    /// Under [`TransitionRule::Tangent`] (1 in every table).
+    pub tangent: Option<f64>,
+    /// Under [`TransitionRule::Wall`] (the paper's Sinai `f_trans = 1`).
+    pub wall: Option<f64>,
+}
+
 /// A population of `|ΔQ|` values, binned in `log10` (quarter decades from
 /// `1e-20` to `1e2`; zeros and smaller values go to the underflow count),
 /// with the exact count and maximum.
@@ -266,6 +279,16 @@ impl WallStatistics {
         Some(k as f64 / self.pairs as f64)
     }
 
+    /// `f_trans` under all three rules at once.
+    #[must_use]
+    pub fn transition_fractions(&self) -> TransitionFractions {
+        TransitionFractions {
+            direction: self.transition_fraction(TransitionRule::Direction),
+            tangent: self.transition_fraction(TransitionRule::Tangent),
+            wall: self.transition_fraction(TransitionRule::Wall),
+        }
+    }
+
     /// Share of collisions on curved walls (`None` before any collision).
     ///
     /// # Theory and the paper
@@ -398,4 +421,41 @@ pub fn wall_statistics_ensemble<B: Boundary + Sync>(
         total.merge(part)?;
     }
     Ok(total)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use spinball_geometry::{Sinai, Stadium};
+
+    #[test]
+    fn transition_fractions_under_the_three_rules() {
+        // Sinai: every consecutive pair changes wall and oriented tangent
+        // (the type docs: the wall and tangent rules give 1 exactly).
+        let billiard = Billiard::new(Sinai::new(2.0, 1.0).unwrap(), SpinLaw::new(0.5).unwrap());
+        let start = Sampler::Paper.initial_state(billiard.table(), billiard.law(), 1, 0);
+        let f = wall_statistics(&billiard, start, 5_000)
+            .unwrap()
+            .transition_fractions();
+        assert_eq!((f.tangent, f.wall), (Some(1.0), Some(1.0)));
+        assert!(f.direction.unwrap() < 1.0);
+        // Stadium: two hits in a row on one cap keep the wall id, so the
+        // wall rule counts fewer transitions than the tangent rule.
+        let billiard = Billiard::new(Stadium::new(1.0).unwrap(), SpinLaw::new(0.5).unwrap());
+        let start = Sampler::Paper.initial_state(billiard.table(), billiard.law(), 1, 0);
+        let stats = wall_statistics(&billiard, start, 5_000).unwrap();
+        let f = stats.transition_fractions();
+        assert_eq!(f.tangent, Some(1.0));
+        assert_eq!(f.wall, stats.transition_fraction(TransitionRule::Wall));
+        assert_eq!(
+            f.direction,
+            stats.transition_fraction(TransitionRule::Direction)
+        );
+        assert!(f.wall.unwrap() < 1.0);
+        let empty = WallStatistics::new(billiard.law()).transition_fractions();
+        assert_eq!(
+            (empty.direction, empty.tangent, empty.wall),
+            (None, None, None)
+        );
+    }
 }

@@ -30,11 +30,15 @@
 //! - figures of one analysis each, with their CSV rows: [`EnergyPanels`]
 //!   (energy conservation), [`section_panel`] (Poincaré sections),
 //!   [`island_panel`] (FTLE maps with the bouncing-ball island),
-//!   [`kac_histogram`] (return times against Kac's lemma) and
+//!   [`kac_histogram`] (return times against Kac's lemma),
+//!   [`q_class_panel`] and [`q_conserved_panel`] (`ΔQ` between collisions),
+//!   [`lcn_trace_panel`] (single-trajectory LCN traces),
+//!   [`collision_rate_grid`] (ν and λ/ν against α) and
 //!   [`spectrum_grid`] (the Lyapunov spectrum against α);
 //! - [`measured`] and [`paper_markers`]: series of values ± SEM and of the
 //!   paper's numbers ([`spinball_analysis::paper`]); [`table_i_markdown`]
-//!   and friends set our convergence table beside the paper's Table I.
+//!   and friends ([`table_i_rows`], [`table_i_grid`]) set our convergence
+//!   table beside the paper's Table I.
 //!
 //! These live here, not in the library crates, because only figures need
 //! them: the analysis crates never depend on plotting, argument parsing or
@@ -87,6 +91,7 @@ mod grid;
 mod histogram;
 mod island_figure;
 mod kac_figure;
+mod lcn_figure;
 mod lines;
 mod measured;
 mod outline;
@@ -94,6 +99,8 @@ mod phase_plot;
 mod plan;
 mod plot;
 mod progress;
+mod q_figure;
+mod rate_figure;
 mod rates;
 mod report;
 mod result_plots;
@@ -124,6 +131,7 @@ pub use island_figure::{ISLAND_COLUMNS, island_panel, island_row};
 pub use kac_figure::{
     KAC_COLUMNS, KAC_ORBIT_COLUMNS, kac_histogram, kac_orbit_rows, kac_ratio_series, kac_row,
 };
+pub use lcn_figure::{LCN_TRACE_COLUMNS, LcnFinal, lcn_finals, lcn_trace_panel, lcn_trace_rows};
 pub use lines::{Legend, LineKind, LinePlot, Series};
 pub use measured::{ALPHA_LABEL, LAMBDA_LABEL, measured, measured_band, paper_markers, scaled};
 pub use outline::{ARC_POINTS_PER_TURN, Loop, Outline, ToOutline};
@@ -131,6 +139,10 @@ pub use phase_plot::{MapPlot, Scatter3d};
 pub use plan::{Plan, unit_grid};
 pub use plot::{Plot, render_png};
 pub use progress::Progress;
+pub use q_figure::{
+    Q_ZERO_AT, q_class_panel, q_class_summaries, q_conserved_panel, q_histograms_csv, q_medians,
+};
+pub use rate_figure::collision_rate_grid;
 pub use rates::{CurveRates, relative_drop, relative_spread};
 pub use report::{Header, Report};
 pub use result_plots::{SpectrumPair, ftle_histogram, log_counts, spectrum_grid, spectrum_plot};
@@ -143,8 +155,8 @@ pub use section_figure::{SECTION_COLUMNS, section_cloud, section_panel, section_
 pub use style::Style;
 pub use sweep_json::{SweepDocument, SweepPoint};
 pub use table_i::{
-    TableIColumn, TableIRecord, TableIRow, table_i_csv, table_i_markdown, table_i_paper,
-    table_i_plot, table_i_reference,
+    TableIColumn, TableIRecord, TableIRow, table_i_csv, table_i_grid, table_i_markdown,
+    table_i_paper, table_i_plot, table_i_reference, table_i_rows,
 };
 pub use table_plot::TablePlot;
 pub use work_plots::{

@@ -23,8 +23,14 @@ use spinball_analysis::{
     paper,
 };
 
+use spinball_core::SpinLaw;
+
+use crate::cli::FigureArgs;
 use crate::colormap::viridis;
 use crate::csv::Csv;
+use crate::curves::template;
+use crate::figure::BoxError;
+use crate::grid::Grid;
 use crate::lines::LinePlot;
 use crate::measured::measured;
 
@@ -85,6 +91,49 @@ impl fmt::Display for TableIRow {
             self.wall_time_s
         )
     }
+}
+
+/// The rows of Table I: every table of `tables` (spec, name) at every α of
+/// `alphas`, `ics` initial conditions of the command line's seed (the
+/// same in every column) run to each of `checkpoints` collisions
+/// ([`TableIRow::measure`]), each row printed as it is measured.
+///
+/// # Errors
+/// A spec that does not name a table, an invalid α, and as
+/// [`convergence_estimates`].
+pub fn table_i_rows(
+    args: &FigureArgs,
+    tables: &[(&str, &str)],
+    alphas: &[f64],
+    ics: u64,
+    checkpoints: &[u64],
+) -> Result<Vec<TableIRow>, BoxError> {
+    let mut rows = Vec::with_capacity(tables.len() * alphas.len());
+    for (spec, name) in tables {
+        for &alpha in alphas {
+            let ensemble = template(args, spec)?
+                .with_law(SpinLaw::new(alpha)?)
+                .with_ics(ics);
+            let row = TableIRow::measure(spec, name, &ensemble, checkpoints)?;
+            println!("  {row}");
+            rows.push(row);
+        }
+    }
+    Ok(rows)
+}
+
+/// Side by side, one [`table_i_plot`] per table of `tables` (spec, name),
+/// under a title saying that each point has `ics` initial conditions.
+#[must_use]
+pub fn table_i_grid(rows: &[TableIRow], tables: &[(&str, &str)], ics: u64) -> Grid {
+    let title = format!(
+        "Table I: our λ minus the paper's ({ics} ICs per point, ± our SEM; paper rounds to ±0.0005)"
+    );
+    let grid = Grid::new(1, tables.len()).title(title);
+    let plots = tables
+        .iter()
+        .map(|(spec, name)| table_i_plot(rows, spec, name));
+    plots.fold(grid, Grid::panel)
 }
 
 /// The paper's entry as printed (`0.183(1)`), if it lists one.
@@ -262,7 +311,6 @@ impl From<&TableIRow> for TableIRecord {
 mod tests {
     use super::*;
     use spinball_analysis::Threads;
-    use spinball_core::SpinLaw;
 
     fn row() -> TableIRow {
         let table: spinball_geometry::Table = "stadium:a=1".parse().unwrap();
@@ -331,5 +379,40 @@ mod tests {
                 .validate()
                 .is_err()
         );
+    }
+
+    #[test]
+    fn rows_of_two_tables_and_their_grid() {
+        use crate::cli::Parsed;
+        let Parsed::Run(args) =
+            FigureArgs::try_parse_from("fig_t", ["--seed", "5", "--threads", "1"]).unwrap()
+        else {
+            panic!("help")
+        };
+        let tables = [("stadium:a=1", "Stadium"), ("sinai:L=2,R=1", "Sinai")];
+        let rows = table_i_rows(&args, &tables, &[0.5, 1.0], 4, &[300, 600]).unwrap();
+        let keys: Vec<(&str, f64)> = rows.iter().map(|r| (r.table.as_str(), r.alpha)).collect();
+        assert_eq!(
+            keys,
+            [
+                ("stadium:a=1", 0.5),
+                ("stadium:a=1", 1.0),
+                ("sinai:L=2,R=1", 0.5),
+                ("sinai:L=2,R=1", 1.0)
+            ]
+        );
+        // Each row is the ensemble of the command line's seed at that α.
+        let table: spinball_geometry::Table = "sinai:L=2,R=1".parse().unwrap();
+        let ensemble = Ensemble::new(table, SpinLaw::new(1.0).unwrap())
+            .with_ics(4)
+            .with_seed(5)
+            .with_threads(Threads::Fixed(1));
+        let expected = convergence_estimates(&ensemble, &[300, 600]).unwrap();
+        let means = |e: &[LyapunovEstimate]| e.iter().map(|e| (e.mean, e.sem)).collect::<Vec<_>>();
+        assert_eq!(means(&rows[3].columns), means(&expected));
+        assert_eq!(rows[3].columns[1].n_ics, 4);
+        use crate::plot::Plot;
+        assert!(table_i_grid(&rows, &tables, 4).validate().is_ok());
+        assert!(table_i_rows(&args, &[("stadium:a=1", "S")], &[-1.0], 4, &[300]).is_err());
     }
 }
