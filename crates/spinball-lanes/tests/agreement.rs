@@ -27,7 +27,7 @@
 //!
 //! Tables built from segments (`SegmentTable`) are held to the same
 //! standard: the stadium and the Sinai table written as segments, the
-//! mushroom, an L-shaped polygon and a 20-gon, with starts into their
+//! mushroom, an L-shaped polygon, a 12-gon and a 20-gon, with starts into their
 //! corners, junctions and re-entrant corners and grazing their walls.
 
 use spinball_core::{
@@ -675,7 +675,7 @@ struct Walled {
 
 /// The stadium (a = 1) and the Sinai table (L = 2, R = 1) written as
 /// segments, the mushroom of the `SegmentTable` docs, an L-shaped polygon
-/// and a non-convex 20-gon, each with starts into its corners and junctions
+/// and non-convex 12- and 20-gons, each with starts into its corners and junctions
 /// and grazing its walls.
 fn segment_tables() -> Vec<Walled> {
     use std::f64::consts::{FRAC_PI_2, PI, TAU};
@@ -728,6 +728,13 @@ fn segment_tables() -> Vec<Walled> {
         })
         .collect();
     let twenty = SegmentTable::polygon(&gon).unwrap();
+    // A 12-gon, radii alternating 1 and 0.85: its walls' landing constants
+    // fill 16-entry palettes (AVX-512 permutes two registers), where the
+    // tables above fill 8 (one register) and the 20-gon 24 (a gather).
+    let dozen: Vec<DVec2> = (0..12)
+        .map(|k| DVec2::from_angle(TAU * k as f64 / 12.0) * if k % 2 == 0 { 1.0 } else { 0.85 })
+        .collect();
+    let twelve = SegmentTable::polygon(&dozen).unwrap();
     // Grazing along the 20-gon's wall 3 from just inside its middle.
     let (a, b) = (gon[3], gon[4]);
     let inward = (b - a).perp().normalize();
@@ -782,6 +789,16 @@ fn segment_tables() -> Vec<Walled> {
                 st(0.5, 0.5, 1.5, -0.5),
                 st(0.5, 0.5, -0.5, -0.5),
                 st(1.5, 1e-6, 0.8, 1e-13),
+            ],
+        },
+        Walled {
+            name: "12-gon",
+            table: twelve,
+            special: vec![
+                // Into vertices 0, 7 (re-entrant) and 11.
+                st(0.0, 0.0, dozen[0].x, dozen[0].y),
+                st(0.0, 0.0, dozen[7].x, dozen[7].y),
+                st(0.1, -0.1, dozen[11].x - 0.1, dozen[11].y + 0.1),
             ],
         },
         Walled {

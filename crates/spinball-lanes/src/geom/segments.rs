@@ -14,6 +14,12 @@
 //! lane finds bitwise the scalar hit. The walls' constants are computed
 //! once, when the table is compiled into a [`LaneSegments`].
 //!
+//! The search keeps only the nearest wall's flight time and id per lane;
+//! the winner's constants (start, direction, length of a flat wall; centre,
+//! radius, orientation, curvature of an arc) are fetched by that id from
+//! [`Palette`]s once, for the landing, rather than carried through every
+//! comparison (which would keep a dozen more registers live per lane group).
+//!
 //! A pair of flat walls with exactly opposite normals (see
 //! `spinball_geometry::FlatVisit`) is cast as one wall whose constants are
 //! selected lane by lane (the one facing the ball), which saves most of a
@@ -27,7 +33,7 @@ use spinball_geometry::{ArcSegment, DVec2, FlatVisit, LineSegment, Segment, Segm
 
 use super::round::{Ray, Round, concave_root, contact, convex_root};
 use super::{Geom, LaneHit};
-use crate::lanes::{Lanes, MaskOps};
+use crate::lanes::{Lanes, MaskOps, Palette};
 
 /// A flat wall's constants, as `LineSegment::approach` and `land` use them.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -46,7 +52,6 @@ struct Flat {
     /// Minus the normal: `v·(−n)` is `−(v·n)` exactly.
     mnx: f64,
     mny: f64,
-    length: f64,
     /// `length + slack`: the reach of the wall along itself.
     hi: f64,
 }
@@ -64,7 +69,6 @@ impl Flat {
             ny: normal.y,
             mnx: -normal.x,
             mny: -normal.y,
-            length: l.length(),
             hi: l.length() + slack,
         }
     }
@@ -79,7 +83,6 @@ impl Flat {
             dy: L::splat(self.dy),
             nx: L::splat(self.nx),
             ny: L::splat(self.ny),
-            length: L::splat(self.length),
             hi: L::splat(self.hi),
         }
     }
@@ -95,7 +98,6 @@ struct FlatLanes<L: Lanes> {
     dy: L,
     nx: L,
     ny: L,
-    length: L,
     hi: L,
 }
 
@@ -109,10 +111,6 @@ struct Curve {
     cx: f64,
     cy: f64,
     round: Round,
-    curvature: f64,
-    /// The inward normal's sign against the radial direction: −1 concave,
-    /// +1 convex (multiplying by it negates exactly).
-    sign: f64,
     /// A full circle covers every contact.
     full: bool,
     /// The chord from start to end, times the side of it the arc lies on.
@@ -141,14 +139,64 @@ impl Curve {
             cx: c.x,
             cy: c.y,
             round: Round::new(r),
-            curvature: a.curvature(),
-            sign: if a.is_concave() { -1.0 } else { 1.0 },
             full,
             // `side` is ±1: scaling the chord by it negates the cross
             // product exactly.
             chx: side * chord.x,
             chy: side * chord.y,
             floor: -slack * chord.length() - lift,
+        }
+    }
+}
+
+/// What landing on a wall needs, by wall id: a flat wall's start,
+/// direction and length, an arc's centre, radius and its reciprocal, the
+/// sign of its inward normal against the radial direction, and its
+/// curvature. A wall's entries in the other kind's palettes are 0.
+#[derive(Clone, Debug, PartialEq)]
+struct Landing {
+    sx: Palette,
+    sy: Palette,
+    dx: Palette,
+    dy: Palette,
+    length: Palette,
+    cx: Palette,
+    cy: Palette,
+    r: Palette,
+    inv_r: Palette,
+    sign: Palette,
+    curvature: Palette,
+}
+
+impl Landing {
+    fn new(walls: &[Segment]) -> Self {
+        let of = |f: &dyn Fn(&Segment) -> f64| Palette::new(walls.iter().map(f));
+        let line = |f: fn(&LineSegment) -> f64| {
+            of(&move |w: &Segment| match w {
+                Segment::Line(l) => f(l),
+                Segment::Arc(_) => 0.0,
+            })
+        };
+        let arc = |f: fn(&ArcSegment) -> f64| {
+            of(&move |w: &Segment| match w {
+                Segment::Arc(a) => f(a),
+                Segment::Line(_) => 0.0,
+            })
+        };
+        Landing {
+            sx: line(|l| l.start().x),
+            sy: line(|l| l.start().y),
+            dx: line(|l| l.direction().x),
+            dy: line(|l| l.direction().y),
+            length: line(|l| l.length()),
+            cx: arc(|a| a.center().x),
+            cy: arc(|a| a.center().y),
+            r: arc(|a| Round::new(a.radius()).r),
+            inv_r: arc(|a| Round::new(a.radius()).inv_r),
+            // The inward normal's sign against the radial direction
+            // (multiplying by it negates exactly).
+            sign: arc(|a| if a.is_concave() { -1.0 } else { 1.0 }),
+            curvature: arc(|a| a.curvature()),
         }
     }
 }
@@ -172,6 +220,8 @@ pub(crate) struct LaneSegments {
     steps: Vec<Step>,
     /// The arcs, in id order.
     arcs: Vec<Curve>,
+    /// The walls' constants for the landing, by id.
+    landing: Landing,
     /// `−slack`: how far behind a flat wall, or past its ends, a ball or a
     /// contact still counts.
     lo: f64,
@@ -213,6 +263,7 @@ impl LaneSegments {
             unit: arcs.iter().all(|a| a.round.r == 1.0),
             steps,
             arcs,
+            landing: Landing::new(walls),
             lo: -slack,
         }
     }
@@ -233,6 +284,7 @@ impl LaneSegments {
         Segments {
             steps: &self.steps,
             arcs: &self.arcs,
+            landing: &self.landing,
             lo: self.lo,
             unit: self.unit,
         }
@@ -245,6 +297,7 @@ impl LaneSegments {
 pub(crate) struct Segments<'a, const CURVED: bool> {
     steps: &'a [Step],
     arcs: &'a [Curve],
+    landing: &'a Landing,
     lo: f64,
     unit: bool,
 }
@@ -275,17 +328,12 @@ fn approach<L: Lanes>(f: &FlatLanes<L>, w: L, vd: L, lo: f64, ray: &Ray<L>) -> (
 }
 
 /// The earliest flat wall so far, lane by lane: its undivided flight time
-/// (`dist / speed`; `dist` NaN while there is none) and what `land` needs.
+/// (`dist / speed`; `dist` NaN while there is none) and its id.
 #[derive(Clone, Copy, Debug)]
 struct Earliest<L: Lanes> {
     dist: L,
     speed: L,
     id: L,
-    sx: L,
-    sy: L,
-    dx: L,
-    dy: L,
-    length: L,
 }
 
 impl<L: Lanes> Earliest<L> {
@@ -304,73 +352,73 @@ impl<L: Lanes> Earliest<L> {
     }
 
     #[inline(always)]
-    fn keep(&mut self, take: L::Mask, dist: L, w: L, c: &FlatLanes<L>) {
+    fn keep(&mut self, take: L::Mask, dist: L, w: L, id: L) {
         self.dist = L::select(take, dist, self.dist);
         self.speed = L::select(take, w, self.speed);
-        self.id = L::select(take, c.id, self.id);
-        self.sx = L::select(take, c.sx, self.sx);
-        self.sy = L::select(take, c.sy, self.sy);
-        self.dx = L::select(take, c.dx, self.dx);
-        self.dy = L::select(take, c.dy, self.dy);
-        self.length = L::select(take, c.length, self.length);
+        self.id = L::select(take, id, self.id);
     }
+}
 
-    /// `LineSegment::land` after flying for `time` (the one division), as
-    /// a hit.
-    #[inline(always)]
-    fn land(&self, ray: &Ray<L>, time: L) -> LaneHit<L> {
-        let zero = L::splat(0.0);
-        let relx = ray.x - self.sx;
-        let rely = ray.y - self.sy;
-        let along =
-            (relx * self.dx + rely * self.dy) + (ray.vx * self.dx + ray.vy * self.dy) * time;
-        let along = clamp(along, zero, self.length);
-        LaneHit {
-            time,
-            px: self.sx + self.dx * along,
-            py: self.sy + self.dy * along,
-            // The normal is the direction's left perpendicular, exactly.
-            nx: -self.dy,
-            ny: self.dx,
-            curvature: zero,
-            wall: self.id,
-        }
+/// `LineSegment::land` of flat wall `wall` after flying for `time` (the
+/// one division), as a hit.
+#[inline(always)]
+fn land_flat<L: Lanes>(k: &Landing, ray: &Ray<L>, time: L, wall: L) -> LaneHit<L> {
+    let zero = L::splat(0.0);
+    let (sx, sy) = (L::lookup(&k.sx, wall), L::lookup(&k.sy, wall));
+    let (dx, dy) = (L::lookup(&k.dx, wall), L::lookup(&k.dy, wall));
+    let relx = ray.x - sx;
+    let rely = ray.y - sy;
+    let along = (relx * dx + rely * dy) + (ray.vx * dx + ray.vy * dy) * time;
+    let along = clamp(along, zero, L::lookup(&k.length, wall));
+    LaneHit {
+        time,
+        px: sx + dx * along,
+        py: sy + dy * along,
+        // The normal is the direction's left perpendicular, exactly.
+        nx: -dy,
+        ny: dx,
+        curvature: zero,
+        wall,
     }
 }
 
 /// The earliest arc so far, lane by lane: its root's numerator (the
-/// flight time times `|v|²`; NaN while there is none) and what `land` needs.
+/// flight time times `|v|²`; NaN while there is none) and its id.
 #[derive(Clone, Copy, Debug)]
 struct Nearest<L: Lanes> {
     num: L,
     id: L,
-    cx: L,
-    cy: L,
-    r: L,
-    inv_r: L,
-    sign: L,
-    curvature: L,
 }
 
-impl<L: Lanes> Nearest<L> {
-    /// `ArcSegment::land` after flying for `time`, as a hit, in the lanes
-    /// of `care` (where the arc won; the exact normalisation of a contact
-    /// off the circle is computed only if such a lane has one).
-    #[inline(always)]
-    fn land<const UNIT: bool>(&self, ray: &Ray<L>, time: L, care: L::Mask) -> LaneHit<L> {
-        let rx = (ray.x - self.cx) + ray.vx * time;
-        let ry = (ray.y - self.cy) + ray.vy * time;
-        let (px, py, radx, rady) =
-            contact::<L, UNIT>(self.cx, self.cy, rx, ry, self.r, self.inv_r, care);
-        LaneHit {
-            time,
-            px,
-            py,
-            nx: radx * self.sign,
-            ny: rady * self.sign,
-            curvature: self.curvature,
-            wall: self.id,
-        }
+/// `ArcSegment::land` of arc `wall` after flying for `time`, as a hit, in
+/// the lanes of `care` (where the arc won; the exact normalisation of a
+/// contact off the circle is computed only if such a lane has one).
+#[inline(always)]
+fn land_arc<L: Lanes, const UNIT: bool>(
+    k: &Landing,
+    ray: &Ray<L>,
+    time: L,
+    wall: L,
+    care: L::Mask,
+) -> LaneHit<L> {
+    let (cx, cy) = (L::lookup(&k.cx, wall), L::lookup(&k.cy, wall));
+    let (r, inv_r) = if UNIT {
+        (L::splat(1.0), L::splat(1.0))
+    } else {
+        (L::lookup(&k.r, wall), L::lookup(&k.inv_r, wall))
+    };
+    let sign = L::lookup(&k.sign, wall);
+    let rx = (ray.x - cx) + ray.vx * time;
+    let ry = (ray.y - cy) + ray.vy * time;
+    let (px, py, radx, rady) = contact::<L, UNIT>(cx, cy, rx, ry, r, inv_r, care);
+    LaneHit {
+        time,
+        px,
+        py,
+        nx: radx * sign,
+        ny: rady * sign,
+        curvature: L::lookup(&k.curvature, wall),
+        wall,
     }
 }
 
@@ -416,30 +464,15 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
     /// earlier root replaces the best (and any root replaces none).
     #[inline(always)]
     fn arcs<L: Lanes>(&self, ray: &Ray<L>) -> Nearest<L> {
-        let zero = L::splat(0.0);
         let mut best = Nearest {
             num: L::splat(f64::NAN),
-            id: zero,
-            cx: zero,
-            cy: zero,
-            r: zero,
-            inv_r: zero,
-            sign: zero,
-            curvature: zero,
+            id: L::splat(0.0),
         };
         for a in self.arcs {
             let (ok, num) = self.approach_arc(a, ray);
             let take = ok.and(best.num.le(num).not());
             best.num = L::select(take, num, best.num);
             best.id = L::select(take, L::splat(a.id), best.id);
-            best.cx = L::select(take, L::splat(a.cx), best.cx);
-            best.cy = L::select(take, L::splat(a.cy), best.cy);
-            if !self.unit {
-                best.r = L::select(take, L::splat(a.round.r), best.r);
-                best.inv_r = L::select(take, L::splat(a.round.inv_r), best.inv_r);
-            }
-            best.sign = L::select(take, L::splat(a.sign), best.sign);
-            best.curvature = L::select(take, L::splat(a.curvature), best.curvature);
         }
         best
     }
@@ -453,11 +486,6 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
             dist: L::splat(f64::NAN),
             speed: L::splat(1.0),
             id: zero,
-            sx: zero,
-            sy: zero,
-            dx: zero,
-            dy: zero,
-            length: zero,
         };
         // `−(v·n)` and `v·dir` of the last flat wall cast alone.
         let (mut w, mut vd) = (zero, zero);
@@ -473,7 +501,7 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
                     // Every wall visited before this one has a lower id, so
                     // a tie never goes to it: strictly earlier suffices.
                     let take = ok.and(best.beaten::<false>(dist, w, c.id));
-                    best.keep(take, dist, w, &c);
+                    best.keep(take, dist, w, c.id);
                 }
                 Step::Pair(a, b) => {
                     // `−(v·n)` of `a`; that of `b` is its negation, so the
@@ -490,14 +518,13 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
                         dy: sel(ca.dy, cb.dy),
                         nx: sel(ca.nx, cb.nx),
                         ny: sel(ca.ny, cb.ny),
-                        length: sel(ca.length, cb.length),
                         hi: sel(ca.hi, cb.hi),
                     };
                     let w = wa.abs();
                     let vd = vx * c.dx + vy * c.dy;
                     let (ok, dist) = approach(&c, w, vd, self.lo, ray);
                     let take = ok.and(best.beaten::<true>(dist, w, c.id));
-                    best.keep(take, dist, w, &c);
+                    best.keep(take, dist, w, c.id);
                 }
             }
         }
@@ -522,8 +549,16 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
         // The one division: the winner's fraction.
         let time =
             L::select(arc_wins, round.num, flat.dist) / L::select(arc_wins, ray.a, flat.speed);
-        let mut best = flat.land(ray, time);
-        keep(&mut best, arc_wins, round.land::<UNIT>(ray, time, arc_wins));
+        // Both landings fetch their constants by the winner's id (each kind's
+        // palettes hold zeros at the other kind's ids; those lanes are
+        // discarded).
+        let wall = L::select(arc_wins, round.id, flat.id);
+        let mut best = land_flat(self.landing, ray, time, wall);
+        keep(
+            &mut best,
+            arc_wins,
+            land_arc::<L, UNIT>(self.landing, ray, time, wall, arc_wins),
+        );
         best
     }
 }
@@ -536,7 +571,7 @@ impl<const CURVED: bool> Geom for Segments<'_, CURVED> {
         if !CURVED {
             let ray = Ray::flat(x, y, vx, vy);
             let flat = self.flats(&ray);
-            return flat.land(&ray, flat.dist / flat.speed);
+            return land_flat(self.landing, &ray, flat.dist / flat.speed, flat.id);
         }
         // `|v|²` serves every arc.
         let ray = Ray::new_undivided(x, y, vx, vy);

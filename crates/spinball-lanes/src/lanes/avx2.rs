@@ -11,7 +11,7 @@ use std::arch::x86::*;
 #[cfg(target_arch = "x86_64")]
 use std::arch::x86_64::*;
 
-use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS};
+use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS, Palette};
 use crate::isa::Avx2Cpu;
 
 /// Four lanes in an AVX2 register.
@@ -202,5 +202,20 @@ impl Lanes for Avx2 {
         // SAFETY: an AVX/AVX2 intrinsic; code with `Avx2` lanes runs only where
         // AVX2 was detected (the type's invariant).
         Avx2(unsafe { _mm256_castsi256_pd(_mm256_slli_epi64::<{ EXP_SHIFT as i32 }>(e.0)) })
+    }
+    #[inline(always)]
+    fn lookup(p: &Palette, index: Self) -> Self {
+        let t = p.entries();
+        // SAFETY: AVX2 intrinsics (and SSE4.1's `_mm_min_epu32`, which AVX2
+        // implies); code with `Avx2` lanes runs only where AVX2 was detected
+        // (the type's invariant). The gather reads `t[k]` for each lane's
+        // index `k`, clamped to `t.len() - 1` (a NaN or out-of-range lane
+        // converts to `i32::MIN`, which is `2^31` unsigned, and clamps too),
+        // so every read is inside `t`.
+        Avx2(unsafe {
+            let k = _mm256_cvttpd_epi32(index.0);
+            let k = _mm_min_epu32(k, _mm_set1_epi32(t.len() as i32 - 1));
+            _mm256_i32gather_pd::<8>(t.as_ptr(), k)
+        })
     }
 }

@@ -11,7 +11,7 @@ use std::arch::x86::*;
 #[cfg(target_arch = "x86_64")]
 use std::arch::x86_64::*;
 
-use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS};
+use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS, Palette};
 use crate::isa::Avx512Cpu;
 
 /// Eight lanes in an AVX-512 register.
@@ -201,5 +201,31 @@ impl Lanes for Avx512 {
         // SAFETY: an AVX-512F intrinsic; code with `Avx512` lanes runs only where
         // AVX-512 was detected (the type's invariant).
         Avx512(unsafe { _mm512_castsi512_pd(_mm512_slli_epi64::<EXP_SHIFT>(e.0)) })
+    }
+    #[inline(always)]
+    fn lookup(p: &Palette, index: Self) -> Self {
+        let t = p.entries();
+        // SAFETY: AVX-512 F and DQ intrinsics; code with `Avx512` lanes runs
+        // only where AVX-512 F, DQ, VL and BW were detected (the type's
+        // invariant). The loads read `t[0..8]` and, for 16 entries,
+        // `t[8..16]`, inside `t`; the permutes use only the low 3 or 4 bits
+        // of each index. The gather reads `t[k]` for each lane's index `k`,
+        // clamped to `t.len() - 1` (a NaN or out-of-range lane converts to
+        // `2^63` unsigned, which clamps too), so every read is inside `t`.
+        Avx512(unsafe {
+            let k = _mm512_cvttpd_epi64(index.0);
+            match t.len() {
+                8 => _mm512_permutexvar_pd(k, _mm512_loadu_pd(t.as_ptr())),
+                16 => _mm512_permutex2var_pd(
+                    _mm512_loadu_pd(t.as_ptr()),
+                    k,
+                    _mm512_loadu_pd(t.as_ptr().add(8)),
+                ),
+                n => {
+                    let k = _mm512_min_epu64(k, _mm512_set1_epi64(n as i64 - 1));
+                    _mm512_i64gather_pd::<8>(k, t.as_ptr())
+                }
+            }
+        })
     }
 }

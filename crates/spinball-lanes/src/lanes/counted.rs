@@ -9,7 +9,7 @@
 use std::cell::Cell;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-use super::{Lanes, MaskOps};
+use super::{Lanes, MaskOps, Palette};
 use crate::isa::Baseline;
 
 /// Operation classes.
@@ -25,7 +25,7 @@ pub enum Op {
     Sqrt,
     /// max, abs, compare
     Cmp,
-    /// select (blend)
+    /// select (blend) and table lookup (permute)
     Select,
     /// mask logic
     Mask,
@@ -173,5 +173,9 @@ impl Lanes for Counted {
         tick(Op::Bits);
         tick(Op::Bits);
         Counted(f64::pow2(e))
+    }
+    fn lookup(p: &Palette, index: Self) -> Self {
+        tick(Op::Select);
+        Counted(p.get(index.0))
     }
 }

@@ -129,6 +129,12 @@ pub(crate) trait Lanes:
     fn mantissa(self) -> Self;
     /// The `f64` whose bits are `e << 52`: `2^(e − 1023)` for `e` in `1..2047`.
     fn pow2(e: Self::Bits) -> Self;
+    /// `p`'s entry at each lane's index: lane `i` of the result is
+    /// [`p.get(index.lane(i))`](Palette::get) (a wall's constant fetched by
+    /// the wall's id, so that a cast keeps only the id of the nearest wall
+    /// and not its constants). AVX-512 permutes a palette of 8 or 16
+    /// entries within registers; the other levels gather.
+    fn lookup(p: &Palette, index: Self) -> Self;
 
     /// Lanes that are neither NaN nor infinite.
     #[inline(always)]
@@ -147,6 +153,35 @@ pub(crate) trait Lanes:
         let mut buf = [0.0; MAX_LANES];
         self.store(&mut buf);
         buf[i]
+    }
+}
+
+/// A table of constants that lanes index ([`Lanes::lookup`]), padded with
+/// zeros to a multiple of 8 entries (at least 8), so that AVX-512 holds a
+/// table of up to 16 entries in one or two registers.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Palette(Vec<f64>);
+
+impl Palette {
+    /// The entries `values`, in order, then zeros up to a multiple of 8.
+    pub fn new(values: impl IntoIterator<Item = f64>) -> Self {
+        let mut v: Vec<f64> = values.into_iter().collect();
+        v.resize(v.len().div_ceil(8).max(1) * 8, 0.0);
+        Palette(v)
+    }
+
+    /// The entries, padding included (a multiple of 8, at least 8).
+    pub fn entries(&self) -> &[f64] {
+        &self.0
+    }
+
+    /// The entry at `index` (an integer in `0..len`; a NaN, a negative index
+    /// or one past the end reads some entry of the table, which one being
+    /// unspecified).
+    #[inline(always)]
+    pub fn get(&self, index: f64) -> f64 {
+        // `as usize` saturates (NaN and negatives to 0).
+        self.0[(index as usize).min(self.0.len() - 1)]
     }
 }
 

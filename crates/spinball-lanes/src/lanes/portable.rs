@@ -9,7 +9,7 @@
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS};
+use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS, Palette};
 use crate::isa::Baseline;
 
 impl MaskOps for bool {
@@ -120,6 +120,10 @@ impl Lanes for f64 {
     #[inline(always)]
     fn pow2(e: u64) -> f64 {
         f64::from_bits(e << EXP_SHIFT)
+    }
+    #[inline(always)]
+    fn lookup(p: &Palette, index: f64) -> f64 {
+        p.get(index)
     }
 }
 
@@ -255,6 +259,10 @@ impl<L: Lanes, const K: usize> Lanes for Wide<L, K> {
     #[inline(always)]
     fn pow2(e: Self::Bits) -> Self {
         Wide(each!(K, |i| L::pow2(e.0[i])))
+    }
+    #[inline(always)]
+    fn lookup(p: &Palette, index: Self) -> Self {
+        Wide(each!(K, |i| L::lookup(p, index.0[i])))
     }
 }
 

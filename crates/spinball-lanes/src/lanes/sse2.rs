@@ -11,7 +11,7 @@ use std::arch::x86::*;
 #[cfg(target_arch = "x86_64")]
 use std::arch::x86_64::*;
 
-use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS};
+use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS, Palette};
 use crate::isa::Baseline;
 
 /// Two lanes in an SSE2 register.
@@ -209,5 +209,11 @@ impl Lanes for Sse2 {
         // SAFETY: an SSE2 intrinsic; SSE2 is part of the target (the module's
         // cfg), so every CPU that runs this binary has it.
         Sse2(unsafe { _mm_castsi128_pd(_mm_slli_epi64::<{ EXP_SHIFT as i32 }>(e.0)) })
+    }
+    #[inline(always)]
+    fn lookup(p: &Palette, index: Self) -> Self {
+        let mut i = [0.0; 2];
+        index.store(&mut i);
+        Self::load(&[p.get(i[0]), p.get(i[1])])
     }
 }
