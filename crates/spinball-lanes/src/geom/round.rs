@@ -7,7 +7,7 @@
 //! once, over [`Lanes`], operation for operation as the scalar functions,
 //! so that every table's lane cast finds bitwise the scalar hit.
 
-use crate::lanes::{Lanes, MaskOps};
+use crate::lanes::{Lanes, MaskOps, cmp};
 
 /// A ball's position and velocity, with `|v|²` and `1/|v|²`, which do not
 /// depend on the circle: a table with several round walls computes them
@@ -181,7 +181,7 @@ pub(super) fn concave_root<L: Lanes, const ON_AXIS: bool>(
     // On the circle to rounding: touch at once rather than miss.
     let inside = c.le(L::splat(k.touch));
     let disc = L::select(inside, disc.max(zero), disc);
-    let ok = disc.ge(zero).and(a.gt(zero));
+    let ok = disc.test::<{ cmp::GE }>(zero, a.gt(zero));
     Root {
         ok,
         num: disc.sqrt() - b,
@@ -205,7 +205,7 @@ pub(super) fn convex_root<L: Lanes>(cx: L, cy: L, k: &Round, ray: &Ray<L>) -> Ro
     let c = (dx * dx + dy * dy) - k.r2;
     let disc = b * b - a * c;
     Root {
-        ok: b.lt(zero).and(disc.gt(zero)),
+        ok: disc.test::<{ cmp::GT }>(zero, b.lt(zero)),
         num: -b - disc.sqrt(),
         dx,
         dy,

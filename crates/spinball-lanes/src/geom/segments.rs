@@ -33,7 +33,7 @@ use spinball_geometry::{ArcSegment, DVec2, FlatVisit, LineSegment, Segment, Segm
 
 use super::round::{Ray, Round, concave_root, contact, convex_root};
 use super::{Geom, LaneHit};
-use crate::lanes::{Lanes, MaskOps, Palette};
+use crate::lanes::{Lanes, MaskOps, Palette, cmp};
 
 /// A flat wall's constants, as `LineSegment::approach` and `land` use them.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -320,10 +320,10 @@ fn approach<L: Lanes>(f: &FlatLanes<L>, w: L, vd: L, lo: f64, ray: &Ray<L>) -> (
     let rely = ray.y - f.sy;
     let dist = relx * f.nx + rely * f.ny;
     // Moving into the wall, not behind it (a NaN distance is not "behind").
-    let ok = w.gt(zero).and(dist.lt(lo).not());
+    let ok = dist.test::<{ cmp::NLT }>(lo, w.gt(zero));
     let dist = dist.max(zero);
     let along_w = (relx * f.dx + rely * f.dy) * w + vd * dist;
-    let ok = ok.and(along_w.ge(lo * w)).and(along_w.le(f.hi * w));
+    let ok = along_w.test::<{ cmp::LE }>(f.hi * w, along_w.test::<{ cmp::GE }>(lo * w, ok));
     (ok, dist)
 }
 
@@ -337,17 +337,19 @@ struct Earliest<L: Lanes> {
 }
 
 impl<L: Lanes> Earliest<L> {
-    /// Whether the candidate `(dist, w)` of wall `id` comes first: strictly
-    /// earlier (`dist·speed' < dist'·w`, any candidate while there is none),
-    /// or, if `TIES`, as early with a lower id.
+    /// The lanes of `ok` where the candidate `(dist, w)` of wall `id` comes
+    /// first: strictly earlier (`dist·speed' < dist'·w`, any candidate while
+    /// there is none), or, if `TIES`, as early with a lower id.
     #[inline(always)]
-    fn beaten<const TIES: bool>(&self, dist: L, w: L, id: L) -> L::Mask {
+    fn beaten<const TIES: bool>(&self, ok: L::Mask, dist: L, w: L, id: L) -> L::Mask {
         let (x, y) = (dist * self.speed, self.dist * w);
-        let earlier = y.le(x).not();
         if TIES {
-            earlier.or(x.eq(y).and(id.lt(self.id)))
+            ok.and(
+                y.compare::<{ cmp::NLE }>(x)
+                    .or(id.test::<{ cmp::LT }>(self.id, x.eq(y))),
+            )
         } else {
-            earlier
+            y.test::<{ cmp::NLE }>(x, ok)
         }
     }
 
@@ -457,7 +459,10 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
         let qx = root.dx * ray.a + ray.vx * num;
         let qy = root.dy * ray.a + ray.vy * num;
         let cross = qy * a.chx - qx * a.chy;
-        (ok.and(cross.ge(L::splat(a.floor) * ray.a)), num)
+        (
+            cross.test::<{ cmp::GE }>(L::splat(a.floor) * ray.a, ok),
+            num,
+        )
     }
 
     /// The earliest arc of every lane, in id order: only a strictly
@@ -470,7 +475,7 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
         };
         for a in self.arcs {
             let (ok, num) = self.approach_arc(a, ray);
-            let take = ok.and(best.num.le(num).not());
+            let take = best.num.test::<{ cmp::NLE }>(num, ok);
             best.num = L::select(take, num, best.num);
             best.id = L::select(take, L::splat(a.id), best.id);
         }
@@ -500,7 +505,7 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
                     let (ok, dist) = approach(&c, w, vd, self.lo, ray);
                     // Every wall visited before this one has a lower id, so
                     // a tie never goes to it: strictly earlier suffices.
-                    let take = ok.and(best.beaten::<false>(dist, w, c.id));
+                    let take = best.beaten::<false>(ok, dist, w, c.id);
                     best.keep(take, dist, w, c.id);
                 }
                 Step::Pair(a, b) => {
@@ -523,7 +528,7 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
                     let w = wa.abs();
                     let vd = vx * c.dx + vy * c.dy;
                     let (ok, dist) = approach(&c, w, vd, self.lo, ray);
-                    let take = ok.and(best.beaten::<true>(dist, w, c.id));
+                    let take = best.beaten::<true>(ok, dist, w, c.id);
                     best.keep(take, dist, w, c.id);
                 }
             }
@@ -542,10 +547,11 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
         // `t|v|²·speed < dist·|v|²` (any arc if there is no flat wall, a NaN
         // `dist`), ties to the lower id.
         let (x, y) = (round.num * flat.speed, flat.dist * ray.a);
-        let arc_wins = round
-            .num
-            .eq(round.num)
-            .and(y.le(x).not().or(x.eq(y).and(round.id.lt(flat.id))));
+        let arc_wins = round.num.test::<{ cmp::EQ }>(
+            round.num,
+            y.compare::<{ cmp::NLE }>(x)
+                .or(round.id.test::<{ cmp::LT }>(flat.id, x.eq(y))),
+        );
         // The one division: the winner's fraction.
         let time =
             L::select(arc_wins, round.num, flat.dist) / L::select(arc_wins, ray.a, flat.speed);

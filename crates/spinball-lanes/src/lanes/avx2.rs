@@ -204,6 +204,13 @@ impl Lanes for Avx2 {
         Avx2(unsafe { _mm256_castsi256_pd(_mm256_slli_epi64::<{ EXP_SHIFT as i32 }>(e.0)) })
     }
     #[inline(always)]
+    fn compare<const P: i32>(self, o: Self) -> Avx2Mask {
+        // SAFETY: an AVX intrinsic; code with `Avx2` lanes runs only where
+        // AVX2 was detected (the type's invariant). `P` is one of `cmp`'s
+        // predicates, all valid.
+        Avx2Mask(unsafe { _mm256_cmp_pd::<P>(self.0, o.0) })
+    }
+    #[inline(always)]
     fn lookup(p: &Palette, index: Self) -> Self {
         let t = p.entries();
         // SAFETY: AVX2 intrinsics (and SSE4.1's `_mm_min_epu32`, which AVX2

@@ -203,6 +203,18 @@ impl Lanes for Avx512 {
         Avx512(unsafe { _mm512_castsi512_pd(_mm512_slli_epi64::<EXP_SHIFT>(e.0)) })
     }
     #[inline(always)]
+    fn compare<const P: i32>(self, o: Self) -> Avx512Mask {
+        // SAFETY: an AVX-512F intrinsic; code with `Avx512` lanes runs only where
+        // AVX-512 was detected (the type's invariant). `P` is one of `cmp`'s
+        // predicates, all valid.
+        Avx512Mask(unsafe { _mm512_cmp_pd_mask::<P>(self.0, o.0) })
+    }
+    #[inline(always)]
+    fn test<const P: i32>(self, o: Self, within: Avx512Mask) -> Avx512Mask {
+        // SAFETY: as for `compare`; the compare is masked by `within`.
+        Avx512Mask(unsafe { _mm512_mask_cmp_pd_mask::<P>(within.0, self.0, o.0) })
+    }
+    #[inline(always)]
     fn lookup(p: &Palette, index: Self) -> Self {
         let t = p.entries();
         // SAFETY: AVX-512 F and DQ intrinsics; code with `Avx512` lanes runs

@@ -174,6 +174,15 @@ impl Lanes for Counted {
         tick(Op::Bits);
         Counted(f64::pow2(e))
     }
+    fn compare<const P: i32>(self, o: Self) -> CMask {
+        tick(Op::Cmp);
+        CMask(f64::compare::<P>(self.0, o.0))
+    }
+    fn test<const P: i32>(self, o: Self, within: CMask) -> CMask {
+        // One masked compare where the level has them.
+        tick(Op::Cmp);
+        CMask(within.0 && f64::compare::<P>(self.0, o.0))
+    }
     fn lookup(p: &Palette, index: Self) -> Self {
         tick(Op::Select);
         Counted(p.get(index.0))

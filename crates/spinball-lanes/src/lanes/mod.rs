@@ -129,6 +129,27 @@ pub(crate) trait Lanes:
     fn mantissa(self) -> Self;
     /// The `f64` whose bits are `e << 52`: `2^(e − 1023)` for `e` in `1..2047`.
     fn pow2(e: Self::Bits) -> Self;
+    /// The comparison `P` (one of [`cmp`]) lane by lane, the negated ones
+    /// in one instruction where the level has it (x86: a compare with the
+    /// inverse, unordered predicate).
+    #[inline(always)]
+    fn compare<const P: i32>(self, o: Self) -> Self::Mask {
+        match P {
+            cmp::EQ => self.eq(o),
+            cmp::LT => self.lt(o),
+            cmp::LE => self.le(o),
+            cmp::NLT => self.lt(o).not(),
+            cmp::NLE => self.le(o).not(),
+            cmp::GE => self.ge(o),
+            cmp::GT => self.gt(o),
+            _ => unreachable!("not a comparison of `cmp`"),
+        }
+    }
+    /// `within.and(self.compare::<P>(o))`: one masked compare on AVX-512.
+    #[inline(always)]
+    fn test<const P: i32>(self, o: Self, within: Self::Mask) -> Self::Mask {
+        within.and(self.compare::<P>(o))
+    }
     /// `p`'s entry at each lane's index: lane `i` of the result is
     /// [`p.get(index.lane(i))`](Palette::get) (a wall's constant fetched by
     /// the wall's id, so that a cast keeps only the id of the nearest wall
@@ -154,6 +175,27 @@ pub(crate) trait Lanes:
         self.store(&mut buf);
         buf[i]
     }
+}
+
+/// The comparisons of [`Lanes::compare`] and [`Lanes::test`], numbered as
+/// x86's `_CMP_*` predicates: the ordered ones false for NaN, as Rust's
+/// `==`, `<`, `<=`, `>=`, `>`; the negations `!(a < b)`, `!(a <= b)` true
+/// for NaN.
+pub(crate) mod cmp {
+    /// `a == b`.
+    pub const EQ: i32 = 0x00;
+    /// `a < b`.
+    pub const LT: i32 = 0x11;
+    /// `a <= b`.
+    pub const LE: i32 = 0x12;
+    /// `!(a < b)`.
+    pub const NLT: i32 = 0x15;
+    /// `!(a <= b)`.
+    pub const NLE: i32 = 0x16;
+    /// `a >= b`.
+    pub const GE: i32 = 0x1D;
+    /// `a > b`.
+    pub const GT: i32 = 0x1E;
 }
 
 /// A table of constants that lanes index ([`Lanes::lookup`]), padded with

@@ -211,6 +211,24 @@ impl Lanes for Sse2 {
         Sse2(unsafe { _mm_castsi128_pd(_mm_slli_epi64::<{ EXP_SHIFT as i32 }>(e.0)) })
     }
     #[inline(always)]
+    fn compare<const P: i32>(self, o: Self) -> Sse2Mask {
+        // SAFETY (both arms): SSE2 intrinsics; SSE2 is part of the target
+        // (the module's cfg), so every CPU that runs this binary has it.
+        // `cmpnlt`/`cmpnle` are true for NaN, as `!(a < b)`, `!(a <= b)`.
+        match P {
+            super::cmp::NLT => Sse2Mask(unsafe { _mm_cmpnlt_pd(self.0, o.0) }),
+            super::cmp::NLE => Sse2Mask(unsafe { _mm_cmpnle_pd(self.0, o.0) }),
+            _ => match P {
+                super::cmp::EQ => self.eq(o),
+                super::cmp::LT => self.lt(o),
+                super::cmp::LE => self.le(o),
+                super::cmp::GE => self.ge(o),
+                super::cmp::GT => self.gt(o),
+                _ => unreachable!("not a comparison of `cmp`"),
+            },
+        }
+    }
+    #[inline(always)]
     fn lookup(p: &Palette, index: Self) -> Self {
         let mut i = [0.0; 2];
         index.store(&mut i);
