@@ -212,11 +212,12 @@ impl Lanes for Sse2 {
     }
     #[inline(always)]
     fn compare<const P: i32>(self, o: Self) -> Sse2Mask {
-        // SAFETY (both arms): SSE2 intrinsics; SSE2 is part of the target
-        // (the module's cfg), so every CPU that runs this binary has it.
         // `cmpnlt`/`cmpnle` are true for NaN, as `!(a < b)`, `!(a <= b)`.
         match P {
+            // SAFETY: an SSE2 intrinsic; SSE2 is part of the target (the
+            // module's cfg), so every CPU that runs this binary has it.
             super::cmp::NLT => Sse2Mask(unsafe { _mm_cmpnlt_pd(self.0, o.0) }),
+            // SAFETY: as above.
             super::cmp::NLE => Sse2Mask(unsafe { _mm_cmpnle_pd(self.0, o.0) }),
             _ => match P {
                 super::cmp::EQ => self.eq(o),
