@@ -210,11 +210,6 @@ impl Lanes for Avx512 {
         Avx512Mask(unsafe { _mm512_cmp_pd_mask::<P>(self.0, o.0) })
     }
     #[inline(always)]
-    fn test<const P: i32>(self, o: Self, within: Avx512Mask) -> Avx512Mask {
-        // SAFETY: as for `compare`; the compare is masked by `within`.
-        Avx512Mask(unsafe { _mm512_mask_cmp_pd_mask::<P>(within.0, self.0, o.0) })
-    }
-    #[inline(always)]
     fn lookup(p: &Palette, index: Self) -> Self {
         let t = p.entries();
         // SAFETY: AVX-512 F and DQ intrinsics; code with `Avx512` lanes runs

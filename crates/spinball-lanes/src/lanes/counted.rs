@@ -178,11 +178,6 @@ impl Lanes for Counted {
         tick(Op::Cmp);
         CMask(f64::compare::<P>(self.0, o.0))
     }
-    fn test<const P: i32>(self, o: Self, within: CMask) -> CMask {
-        // One masked compare where the level has them.
-        tick(Op::Cmp);
-        CMask(within.0 && f64::compare::<P>(self.0, o.0))
-    }
     fn lookup(p: &Palette, index: Self) -> Self {
         tick(Op::Select);
         Counted(p.get(index.0))

@@ -145,7 +145,11 @@ pub(crate) trait Lanes:
             _ => unreachable!("not a comparison of `cmp`"),
         }
     }
-    /// `within.and(self.compare::<P>(o))`: one masked compare on AVX-512.
+    /// `within.and(self.compare::<P>(o))`: the lanes of `within` where the
+    /// comparison holds. (AVX-512's masked compare would fuse the two, but
+    /// `_mm512_mask_cmp_pd_mask` makes LLVM fail, "Cannot emit physreg copy
+    /// instruction", in some builds of the kernels, so no level overrides
+    /// this.)
     #[inline(always)]
     fn test<const P: i32>(self, o: Self, within: Self::Mask) -> Self::Mask {
         within.and(self.compare::<P>(o))
