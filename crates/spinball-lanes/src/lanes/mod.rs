@@ -7,7 +7,9 @@
 //! of vector registers, and several registers side by side ([`Wide`]), lets
 //! the CPU overlap those chains. Each implementation maps one operation to
 //! one instruction (`vdivpd`, `vcmppd` + `vblendvpd`, ...) of its level, so
-//! the generated code does not depend on the auto-vectoriser.
+//! the generated code does not depend on the auto-vectoriser. The table
+//! lookup ([`Lanes::lookup`]) is the exception: a permute or a gather on
+//! AVX-512 and AVX2, an indexed load per lane on SSE2 and `f64`.
 //!
 //! **Same numbers everywhere.** Every operation is the IEEE operation the
 //! scalar code performs on each lane (no fused multiply-add, no approximate
