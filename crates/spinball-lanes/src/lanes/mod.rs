@@ -149,9 +149,9 @@ pub(crate) trait Lanes:
     }
     /// `within.and(self.compare::<P>(o))`: the lanes of `within` where the
     /// comparison holds. (AVX-512's masked compare would fuse the two, but
-    /// `_mm512_mask_cmp_pd_mask` makes LLVM fail, "Cannot emit physreg copy
-    /// instruction", in some builds of the kernels, so no level overrides
-    /// this.)
+    /// `_mm512_mask_cmp_pd_mask` makes LLVM 22 fail, "Cannot emit physreg
+    /// copy instruction", in some builds of the kernels (an open X86 backend
+    /// regression, llvm/llvm-project#179100), so no level overrides this.)
     #[inline(always)]
     fn test<const P: i32>(self, o: Self, within: Self::Mask) -> Self::Mask {
         within.and(self.compare::<P>(o))
