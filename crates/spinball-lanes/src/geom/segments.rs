@@ -191,7 +191,7 @@ impl Landing {
             length: line(|l| l.length()),
             cx: arc(|a| a.center().x),
             cy: arc(|a| a.center().y),
-            r: arc(|a| Round::new(a.radius()).r),
+            r: arc(|a| a.radius()),
             inv_r: arc(|a| Round::new(a.radius()).inv_r),
             // The inward normal's sign against the radial direction
             // (multiplying by it negates exactly).

@@ -265,10 +265,6 @@ impl<L: Lanes, const K: usize> Lanes for Wide<L, K> {
         Wide(each!(K, |i| self.0[i].compare::<P>(o.0[i])))
     }
     #[inline(always)]
-    fn test<const P: i32>(self, o: Self, within: Self::Mask) -> Self::Mask {
-        Wide(each!(K, |i| self.0[i].test::<P>(o.0[i], within.0[i])))
-    }
-    #[inline(always)]
     fn lookup(p: &Palette, index: Self) -> Self {
         Wide(each!(K, |i| L::lookup(p, index.0[i])))
     }

@@ -219,14 +219,12 @@ impl Lanes for Sse2 {
             super::cmp::NLT => Sse2Mask(unsafe { _mm_cmpnlt_pd(self.0, o.0) }),
             // SAFETY: as above.
             super::cmp::NLE => Sse2Mask(unsafe { _mm_cmpnle_pd(self.0, o.0) }),
-            _ => match P {
-                super::cmp::EQ => self.eq(o),
-                super::cmp::LT => self.lt(o),
-                super::cmp::LE => self.le(o),
-                super::cmp::GE => self.ge(o),
-                super::cmp::GT => self.gt(o),
-                _ => unreachable!("not a comparison of `cmp`"),
-            },
+            super::cmp::EQ => self.eq(o),
+            super::cmp::LT => self.lt(o),
+            super::cmp::LE => self.le(o),
+            super::cmp::GE => self.ge(o),
+            super::cmp::GT => self.gt(o),
+            _ => unreachable!("not a comparison of `cmp`"),
         }
     }
     #[inline(always)]
