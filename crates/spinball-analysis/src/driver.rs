@@ -15,6 +15,7 @@
 use std::time::Instant;
 
 use spinball_geometry::Boundary;
+use spinball_lanes::CHUNK;
 
 use crate::ensemble::Ensemble;
 use crate::error::AnalysisError;
@@ -131,9 +132,18 @@ impl Point {
     pub(crate) const SINGLE: Point = Point { index: 0, of: 1 };
 }
 
-/// Batches of a run without a stop rule: about 20 progress reports.
-fn default_batch(n: u64) -> u64 {
-    n.div_ceil(20).max(64)
+/// Batches of a run without a stop rule: about 20 progress reports, each a
+/// whole number of lane chunks ([`CHUNK`], a multiple of every lane kernel's
+/// register group) per thread. A batch is cut into chunks from its start, so
+/// a batch that is not such a multiple ends in a partial register group
+/// whose idle lanes cost as much as full ones (64 initial conditions in the
+/// 24-lane groups of the AVX-512 finite-difference kernel run as 72), and a
+/// batch of an odd number of chunks leaves one of two threads idle for a
+/// chunk. Only the run's last batch is partial. The batch size does not
+/// change any number of the run.
+fn default_batch(n: u64, threads: usize) -> u64 {
+    let whole = CHUNK as u64 * threads.max(1) as u64;
+    n.div_ceil(20).max(1).next_multiple_of(whole)
 }
 
 impl<B: Boundary + Sync> Ensemble<B> {
@@ -276,7 +286,7 @@ impl<B: Boundary + Sync> Ensemble<B> {
         let clock = Instant::now();
         let (start, end) = (self.indices.start, self.indices.end);
         let n = end - start;
-        let batch = stop.map_or_else(|| default_batch(n), |r| r.batch);
+        let batch = stop.map_or_else(|| default_batch(n, self.threads.count()), |r| r.batch);
         let mut acc: Accumulator = done.iter().map(|t| t.exponent).collect();
         let mut next = start.saturating_add(done.len() as u64).min(end);
         let mut trajectories = done;
@@ -342,4 +352,53 @@ impl<B: Boundary + Sync> Ensemble<B> {
 pub(crate) struct Batches {
     pub trajectories: Vec<TrajectoryStats>,
     pub reason: StopReason,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::parallel::Threads;
+    use crate::test_support::template;
+
+    #[test]
+    fn default_batches_fill_whole_lane_chunks_per_thread() {
+        // About 20 batches, rounded up to whole chunks per thread.
+        assert_eq!(default_batch(1_000, 1), CHUNK as u64);
+        assert_eq!(default_batch(1_000, 2), 2 * CHUNK as u64);
+        assert_eq!(default_batch(100_000, 2), 27 * 2 * CHUNK as u64);
+        assert_eq!(default_batch(1, 1), CHUNK as u64);
+        for (n, threads) in [(10, 1), (999, 2), (4_000, 3), (123_456, 8)] {
+            let batch = default_batch(n, threads);
+            assert_eq!(
+                batch % (CHUNK * threads) as u64,
+                0,
+                "n {n} threads {threads}"
+            );
+            assert!(batch >= n.div_ceil(20), "n {n} threads {threads}");
+            assert!(batch < n.div_ceil(20) + (CHUNK * threads) as u64);
+        }
+    }
+
+    #[test]
+    fn a_run_reports_batches_of_whole_chunks_and_a_partial_last() {
+        let n = 2 * CHUNK as u64 + 5;
+        let ensemble = template()
+            .with_ics(n)
+            .with_collisions(50)
+            .with_threads(Threads::Fixed(1));
+        let mut sizes = Vec::new();
+        let estimate = ensemble
+            .run_observed(None, &mut |event: &RunEvent<'_>| {
+                if let RunEvent::Trajectories(part) = event {
+                    sizes.push(part.len());
+                }
+                Control::Continue
+            })
+            .unwrap();
+        assert_eq!(sizes, [CHUNK, CHUNK, 5]);
+        // The batch size changes no number.
+        let whole = ensemble.run_until(&StopRule::new(n, 0.0)).unwrap();
+        assert_eq!(estimate.mean.to_bits(), whole.mean.to_bits());
+        assert_eq!(estimate.sem.to_bits(), whole.sem.to_bits());
+    }
 }

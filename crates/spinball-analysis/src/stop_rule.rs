@@ -26,7 +26,11 @@ use crate::result::StopReason;
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
 pub struct StopRule {
-    /// Initial conditions per batch (≥ 2).
+    /// Initial conditions per batch (≥ 2). With the lane engine a multiple
+    /// of [`CHUNK`](spinball_lanes::CHUNK) (96) per thread runs fastest: a
+    /// batch is cut into chunks from its start, and the lanes of a partial
+    /// register group idle at full cost. The batch size changes no number,
+    /// only where a stop rule may stop.
     pub batch: u64,
     /// Target relative standard error `SEM/|mean|` (e.g. `0.01` for 1%);
     /// with a `bias`, the target relative total error.

@@ -255,7 +255,7 @@ def lyapunov(
     engine: str = "lanes",
     extended: bool = False,
     target_rel_sem: Optional[float] = None,
-    batch: int = 64,
+    batch: int = 96,
     time_budget: Optional[float] = None,
     progress: Progress = None,
 ) -> LyapunovResult: ...
@@ -276,7 +276,7 @@ def alpha_sweep(
     engine: str = "lanes",
     extended: bool = False,
     target_rel_sem: Optional[float] = None,
-    batch: int = 64,
+    batch: int = 96,
     time_budget: Optional[float] = None,
     progress: Progress = None,
 ) -> List[LyapunovResult]: ...

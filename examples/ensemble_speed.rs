@@ -1,0 +1,143 @@
+//! What a λ ensemble costs per IC-step on each engine: the lane kernels
+//! against the scalar path, both through `Ensemble::run`, as a user runs
+//! them (sampling, chunking, threads and reduction included).
+//!
+//! ```text
+//! cargo run --release --example ensemble_speed -- [--table stadium:a=1 | --table FILE.toml]
+//!     [--alpha 0.5] [--ics 2000] [--collisions 20000] [--repeat 3] [--threads N] [--seed S]
+//!     [--quick]
+//! ```
+//!
+//! Run it from the repository's root (the default table is the file
+//! `docs/tables/mushroom.toml`). `--quick`: 192 initial conditions of 2000
+//! collisions, a smoke test rather than a measurement.
+//!
+//! For each method (finite differences at δ0 = 1e-7, the default, and the
+//! exact tangent) it prints the median wall time per IC-step of `--repeat`
+//! runs on each engine and their ratio. The scalar engine runs a tenth of the
+//! initial conditions (the same first indices). `--table` takes a built-in
+//! spec or a table file (`docs/tables/mushroom.toml`, see
+//! docs/TABLE_FILES.md); the engines run the concrete table type, so the
+//! scalar path is statically dispatched as in a typed ensemble.
+
+use std::process::ExitCode;
+use std::time::Instant;
+
+use spinball::geometry::{Built, TableFile, TableVisitor};
+use spinball::prelude::*;
+use spinball_plot::cli::Opt;
+use spinball_plot::{BoxError, run_figure_with};
+
+const NAME: &str = "ensemble_speed";
+const ABOUT: &str =
+    "Wall ns per IC-step of the λ ensemble on the lane and scalar engines, and their ratio.";
+const OPTIONS: [Opt; 5] = [
+    Opt::value(
+        "table",
+        "SPEC|FILE",
+        "built-in spec or table file (default docs/tables/mushroom.toml)",
+    ),
+    Opt::value("alpha", "A", "spin parameter α (default 0.5)"),
+    Opt::value(
+        "ics",
+        "N",
+        "initial conditions on the lane engine (default 2000, quick 192)",
+    ),
+    Opt::value(
+        "collisions",
+        "T",
+        "collisions per trajectory (default 20000, quick 2000)",
+    ),
+    Opt::value(
+        "repeat",
+        "R",
+        "runs per engine and method, median reported (default 3)",
+    ),
+];
+
+/// The run's settings.
+struct Bench {
+    alpha: f64,
+    ics: u64,
+    collisions: u64,
+    repeat: usize,
+    seed: u64,
+    threads: Threads,
+}
+
+impl TableVisitor for &Bench {
+    type Output = Result<(), BoxError>;
+    fn visit<B: Boundary + Clone + Send + Sync>(self, table: &B) -> Self::Output {
+        let law = SpinLaw::extended(self.alpha)?;
+        for method in [Method::FiniteDifference { delta0: 1e-7 }, Method::Tangent] {
+            let mut ns = [0.0; 2];
+            for (cost, (engine, ics)) in ns.iter_mut().zip([
+                (Engine::Lanes, self.ics),
+                (Engine::Scalar, (self.ics / 10).max(2)),
+            ]) {
+                let ensemble = Ensemble::new(table.clone(), law)
+                    .with_seed(self.seed)
+                    .with_ics(ics)
+                    .with_collisions(self.collisions)
+                    .with_method(method)
+                    .with_threads(self.threads)
+                    .with_engine(engine);
+                let mut runs = Vec::with_capacity(self.repeat);
+                for _ in 0..self.repeat {
+                    let clock = Instant::now();
+                    let estimate = ensemble.run()?;
+                    runs.push(clock.elapsed().as_secs_f64());
+                    if estimate.engine != engine {
+                        return Err(format!("asked for {engine}, ran {}", estimate.engine).into());
+                    }
+                }
+                runs.sort_by(f64::total_cmp);
+                *cost = runs[runs.len() / 2] / (ics as f64 * self.collisions as f64) * 1e9;
+                println!(
+                    "{:<8} {:<7} {:9.3} ns/IC-step",
+                    method.name(),
+                    engine.name(),
+                    *cost
+                );
+            }
+            println!("{:<8} lanes ÷ scalar: {:.2}×", method.name(), ns[1] / ns[0]);
+        }
+        Ok(())
+    }
+}
+
+fn main() -> ExitCode {
+    run_figure_with(NAME, ABOUT, &OPTIONS, |args, _| {
+        let spec: String = args
+            .extra
+            .get_or("table", "docs/tables/mushroom.toml".to_string())?;
+        let bench = Bench {
+            alpha: args.extra.get_or("alpha", 0.5)?,
+            ics: args.extra.get_or("ics", args.pick(192, 2_000, 2_000))?,
+            collisions: args
+                .extra
+                .get_or("collisions", args.pick(2_000, 20_000, 20_000))?,
+            repeat: args.extra.get_or("repeat", 3usize)?.max(1),
+            seed: args.seed,
+            threads: args.threads,
+        };
+        let table = if spec.ends_with(".toml") || spec.ends_with(".json") {
+            TableFile::read(&spec)?.build()?
+        } else {
+            Built::Table(spec.parse::<Table>()?)
+        };
+        println!(
+            "table {spec} ({table}), α {}, {} ICs (scalar {}), {} collisions, {} thread(s), median of {}",
+            bench.alpha,
+            bench.ics,
+            (bench.ics / 10).max(2),
+            bench.collisions,
+            args.thread_count(),
+            bench.repeat
+        );
+        match table {
+            Built::Table(t) => t.visit(&bench),
+            Built::Segments(t) => (&bench).visit(&t),
+        }
+    })
+}
