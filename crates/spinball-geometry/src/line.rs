@@ -161,8 +161,10 @@ impl LineSegment {
     #[inline]
     #[must_use]
     pub fn land(&self, origin: DVec2, velocity: DVec2, time: f64) -> (DVec2, f64) {
-        let rel = origin - self.start;
-        let along = rel.dot(self.dir) + velocity.dot(self.dir) * time;
+        // The contact relative to the start, projected on the wall, as
+        // `cast` computes it (and as an arc's `land` offsets the contact
+        // from its centre: the lanes share that offset between the kinds).
+        let along = ((origin - self.start) + velocity * time).dot(self.dir);
         let along = along.clamp(0.0, self.length);
         (self.start + self.dir * along, along)
     }

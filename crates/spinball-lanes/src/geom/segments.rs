@@ -149,19 +149,19 @@ impl Curve {
     }
 }
 
-/// What landing on a wall needs, by wall id: a flat wall's start,
-/// direction and length, an arc's centre, radius and its reciprocal, the
-/// sign of its inward normal against the radial direction, and its
-/// curvature. A wall's entries in the other kind's palettes are 0.
+/// What landing on a wall needs, by wall id: its origin (a flat wall's
+/// start, an arc's centre: the ball's offset from it after the flight is
+/// computed once for both kinds), a flat wall's direction and length, an
+/// arc's radius and its reciprocal, the sign of its inward normal against
+/// the radial direction, and its curvature. A wall's entries in the other
+/// kind's palettes are 0.
 #[derive(Clone, Debug, PartialEq)]
 struct Landing {
-    sx: Palette,
-    sy: Palette,
+    ox: Palette,
+    oy: Palette,
     dx: Palette,
     dy: Palette,
     length: Palette,
-    cx: Palette,
-    cy: Palette,
     r: Palette,
     inv_r: Palette,
     sign: Palette,
@@ -183,14 +183,16 @@ impl Landing {
                 Segment::Line(_) => 0.0,
             })
         };
+        let origin = |w: &Segment| match w {
+            Segment::Line(l) => l.start(),
+            Segment::Arc(a) => a.center(),
+        };
         Landing {
-            sx: line(|l| l.start().x),
-            sy: line(|l| l.start().y),
+            ox: of(&|w: &Segment| origin(w).x),
+            oy: of(&|w: &Segment| origin(w).y),
             dx: line(|l| l.direction().x),
             dy: line(|l| l.direction().y),
             length: line(|l| l.length()),
-            cx: arc(|a| a.center().x),
-            cy: arc(|a| a.center().y),
             r: arc(|a| a.radius()),
             inv_r: arc(|a| Round::new(a.radius()).inv_r),
             // The inward normal's sign against the radial direction
@@ -361,25 +363,47 @@ impl<L: Lanes> Earliest<L> {
     }
 }
 
+/// Wall `wall`'s origin (a flat wall's start, an arc's centre) and the
+/// ball's offset from it after flying for `time`, `(origin − o) + v·time`,
+/// as `LineSegment::land` and `ArcSegment::land` compute it.
+#[inline(always)]
+fn offset<L: Lanes>(k: &Landing, ray: &Ray<L>, time: L, wall: L) -> (L, L, L, L) {
+    let (ox, oy) = (L::lookup(&k.ox, wall), L::lookup(&k.oy, wall));
+    (
+        ox,
+        oy,
+        (ray.x - ox) + ray.vx * time,
+        (ray.y - oy) + ray.vy * time,
+    )
+}
+
+/// `LineSegment::land` of flat wall `wall` from the ball's offset `q`
+/// from its start `o`: the contact and the normal.
+#[inline(always)]
+fn flat_contact<L: Lanes>(k: &Landing, o: (L, L), q: (L, L), wall: L) -> (L, L, L, L) {
+    let (dx, dy) = (L::lookup(&k.dx, wall), L::lookup(&k.dy, wall));
+    let along = clamp(
+        q.0 * dx + q.1 * dy,
+        L::splat(0.0),
+        L::lookup(&k.length, wall),
+    );
+    // The normal is the direction's left perpendicular, exactly.
+    (o.0 + dx * along, o.1 + dy * along, -dy, dx)
+}
+
 /// `LineSegment::land` of flat wall `wall` after flying for `time` (the
-/// one division), as a hit.
+/// one division), as a hit: the landing of a table without arcs.
 #[inline(always)]
 fn land_flat<L: Lanes>(k: &Landing, ray: &Ray<L>, time: L, wall: L) -> LaneHit<L> {
-    let zero = L::splat(0.0);
-    let (sx, sy) = (L::lookup(&k.sx, wall), L::lookup(&k.sy, wall));
-    let (dx, dy) = (L::lookup(&k.dx, wall), L::lookup(&k.dy, wall));
-    let relx = ray.x - sx;
-    let rely = ray.y - sy;
-    let along = (relx * dx + rely * dy) + (ray.vx * dx + ray.vy * dy) * time;
-    let along = clamp(along, zero, L::lookup(&k.length, wall));
+    let (ox, oy, qx, qy) = offset(k, ray, time, wall);
+    let (px, py, nx, ny) = flat_contact(k, (ox, oy), (qx, qy), wall);
     LaneHit {
         time,
-        px: sx + dx * along,
-        py: sy + dy * along,
-        // The normal is the direction's left perpendicular, exactly.
-        nx: -dy,
-        ny: dx,
-        curvature: zero,
+        px,
+        py,
+        nx,
+        ny,
+        curvature: L::splat(0.0),
         wall,
     }
 }
@@ -392,48 +416,38 @@ struct Nearest<L: Lanes> {
     id: L,
 }
 
-/// `ArcSegment::land` of arc `wall` after flying for `time`, as a hit, in
-/// the lanes of `care` (where the arc won; the exact normalisation of a
-/// contact off the circle is computed only if such a lane has one).
+/// The landing on wall `wall` after flying for `time`, as a hit:
+/// `ArcSegment::land` in the lanes of `arc_wins`, `LineSegment::land` in
+/// the others, sharing the lookup of the origin and the offset from it.
+/// The exact normalisation of an arc contact off the circle is computed
+/// only if a lane of `arc_wins` has one.
 #[inline(always)]
-fn land_arc<L: Lanes, const UNIT: bool>(
+fn land<L: Lanes, const UNIT: bool>(
     k: &Landing,
     ray: &Ray<L>,
     time: L,
     wall: L,
-    care: L::Mask,
+    arc_wins: L::Mask,
 ) -> LaneHit<L> {
-    let (cx, cy) = (L::lookup(&k.cx, wall), L::lookup(&k.cy, wall));
+    let (ox, oy, qx, qy) = offset(k, ray, time, wall);
+    let (fx, fy, fnx, fny) = flat_contact(k, (ox, oy), (qx, qy), wall);
     let (r, inv_r) = if UNIT {
         (L::splat(1.0), L::splat(1.0))
     } else {
         (L::lookup(&k.r, wall), L::lookup(&k.inv_r, wall))
     };
+    let (px, py, radx, rady) = contact::<L, UNIT>(ox, oy, qx, qy, r, inv_r, arc_wins);
     let sign = L::lookup(&k.sign, wall);
-    let rx = (ray.x - cx) + ray.vx * time;
-    let ry = (ray.y - cy) + ray.vy * time;
-    let (px, py, radx, rady) = contact::<L, UNIT>(cx, cy, rx, ry, r, inv_r, care);
     LaneHit {
         time,
-        px,
-        py,
-        nx: radx * sign,
-        ny: rady * sign,
+        px: L::select(arc_wins, px, fx),
+        py: L::select(arc_wins, py, fy),
+        nx: L::select(arc_wins, radx * sign, fnx),
+        ny: L::select(arc_wins, rady * sign, fny),
+        // 0 at a flat wall's id.
         curvature: L::lookup(&k.curvature, wall),
         wall,
     }
-}
-
-/// Replace the best hit by `c` in the lanes of `take`.
-#[inline(always)]
-fn keep<L: Lanes>(best: &mut LaneHit<L>, take: L::Mask, c: LaneHit<L>) {
-    best.time = L::select(take, c.time, best.time);
-    best.px = L::select(take, c.px, best.px);
-    best.py = L::select(take, c.py, best.py);
-    best.nx = L::select(take, c.nx, best.nx);
-    best.ny = L::select(take, c.ny, best.ny);
-    best.curvature = L::select(take, c.curvature, best.curvature);
-    best.wall = L::select(take, c.wall, best.wall);
 }
 
 impl<const CURVED: bool> Segments<'_, CURVED> {
@@ -559,13 +573,7 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
         // palettes hold zeros at the other kind's ids; those lanes are
         // discarded).
         let wall = L::select(arc_wins, round.id, flat.id);
-        let mut best = land_flat(self.landing, ray, time, wall);
-        keep(
-            &mut best,
-            arc_wins,
-            land_arc::<L, UNIT>(self.landing, ray, time, wall, arc_wins),
-        );
-        best
+        land::<L, UNIT>(self.landing, ray, time, wall, arc_wins)
     }
 }
 
