@@ -206,20 +206,23 @@ impl<B: Boundary + Sync> Ensemble<B> {
     /// the range or when the observer says [`Control::Stop`].
     ///
     /// ```
-    /// use spinball_analysis::{Control, Ensemble, RunEvent, StopReason};
+    /// use spinball_analysis::{Control, Ensemble, RunEvent, StopReason, Threads};
     /// use spinball_core::SpinLaw;
     /// use spinball_geometry::Sinai;
     ///
     /// let ensemble = Ensemble::new(Sinai::new(2.0, 1.0)?, SpinLaw::new(0.5)?)
     ///     .with_ics(1_000)
-    ///     .with_collisions(1_000);
+    ///     .with_collisions(1_000)
+    ///     .with_threads(Threads::Fixed(1));
     /// // Cancel after the first batch (e.g. on Ctrl-C).
     /// let estimate = ensemble.run_observed(None, &mut |event: &RunEvent<'_>| match event {
     ///     RunEvent::Batch(_) => Control::Stop,
     ///     _ => Control::Continue,
     /// })?;
     /// assert_eq!(estimate.stop, StopReason::Cancelled);
-    /// assert_eq!(estimate.n_ics, 64);
+    /// // A batch of about a twentieth of the range, in whole lane chunks
+    /// // (96 initial conditions) per thread.
+    /// assert_eq!(estimate.n_ics, 96);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     ///

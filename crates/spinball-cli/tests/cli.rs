@@ -164,7 +164,7 @@ fn an_interrupted_run_resumes_to_the_uninterrupted_result() {
     let json = dir.join("r.json");
     let j = json.to_str().unwrap();
     let checkpoint = dir.join("r.json.partial");
-    // The scalar engine on one thread: 20 batches of 64 ICs, long enough
+    // The scalar engine on one thread: 14 batches of 96 ICs, long enough
     // to be stopped after the first.
     let args = [
         "lyapunov",
