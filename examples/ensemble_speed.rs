@@ -23,6 +23,7 @@
 use std::process::ExitCode;
 use std::time::Instant;
 
+use spinball::analysis::median;
 use spinball::geometry::{Built, TableFile, TableVisitor};
 use spinball::prelude::*;
 use spinball_plot::cli::Opt;
@@ -65,6 +66,13 @@ struct Bench {
     threads: Threads,
 }
 
+impl Bench {
+    /// Initial conditions on the scalar engine: a tenth (at least 2).
+    fn scalar_ics(&self) -> u64 {
+        (self.ics / 10).max(2)
+    }
+}
+
 impl TableVisitor for &Bench {
     type Output = Result<(), BoxError>;
     fn visit<B: Boundary + Clone + Send + Sync>(self, table: &B) -> Self::Output {
@@ -73,7 +81,7 @@ impl TableVisitor for &Bench {
             let mut ns = [0.0; 2];
             for (cost, (engine, ics)) in ns.iter_mut().zip([
                 (Engine::Lanes, self.ics),
-                (Engine::Scalar, (self.ics / 10).max(2)),
+                (Engine::Scalar, self.scalar_ics()),
             ]) {
                 let ensemble = Ensemble::new(table.clone(), law)
                     .with_seed(self.seed)
@@ -91,8 +99,8 @@ impl TableVisitor for &Bench {
                         return Err(format!("asked for {engine}, ran {}", estimate.engine).into());
                     }
                 }
-                runs.sort_by(f64::total_cmp);
-                *cost = runs[runs.len() / 2] / (ics as f64 * self.collisions as f64) * 1e9;
+                let wall = median(&runs).ok_or("no run")?;
+                *cost = wall / (ics as f64 * self.collisions as f64) * 1e9;
                 println!(
                     "{:<8} {:<7} {:9.3} ns/IC-step",
                     method.name(),
@@ -130,7 +138,7 @@ fn main() -> ExitCode {
             "table {spec} ({table}), α {}, {} ICs (scalar {}), {} collisions, {} thread(s), median of {}",
             bench.alpha,
             bench.ics,
-            (bench.ics / 10).max(2),
+            bench.scalar_ics(),
             bench.collisions,
             args.thread_count(),
             bench.repeat
