@@ -146,7 +146,10 @@ impl LineSegment {
         if dist < -slack {
             return None;
         }
-        let dist = dist.max(0.0);
+        // The positive part, `+0.0` for either zero (as `maxpd`), so a
+        // kernel that leaves out a product with an exactly zero normal
+        // component (an axis-aligned wall) still finds bitwise this `dist`.
+        let dist = if dist > 0.0 { dist } else { 0.0 };
         let along_w = rel.dot(self.dir) * w + velocity.dot(self.dir) * dist;
         if !(along_w >= -slack * w && along_w <= (self.length + slack) * w) {
             return None;
@@ -217,4 +220,30 @@ pub fn cast_line(
         normal,
         along,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_ball_on_the_line_is_at_distance_plus_zero() {
+        // A wall whose normal, (−0.8, −0.6), has two negative components:
+        // from its start the dot product is (+0)(−0.8) + (+0)(−0.6) = −0,
+        // and the clamped distance is +0 (as the lanes' `maxpd` gives it,
+        // whichever products a lane kernel leaves out).
+        let wall = LineSegment::new(DVec2::ZERO, DVec2::new(-0.6, 0.8)).unwrap();
+        let n = wall.normal();
+        assert!(n.x < 0.0 && n.y < 0.0, "{n:?}");
+        let a = wall
+            .approach(DVec2::ZERO, DVec2::new(0.8, 0.6), 1e-12)
+            .unwrap();
+        assert_eq!(a.dist.to_bits(), 0.0_f64.to_bits());
+        assert!(a.speed > 0.99, "{}", a.speed);
+        // A ball a hair behind the line (within the slack) is clamped to +0 too.
+        let a = wall
+            .approach(DVec2::new(1e-14, 0.0), DVec2::new(0.8, 0.6), 1e-12)
+            .unwrap();
+        assert_eq!(a.dist.to_bits(), 0.0_f64.to_bits());
+    }
 }

@@ -130,7 +130,7 @@ impl Lanes for Counted {
     }
     fn max(self, o: Self) -> Self {
         tick(Op::Cmp);
-        Counted(self.0.max(o.0))
+        Counted(if self.0 > o.0 { self.0 } else { o.0 })
     }
     fn lt(self, o: Self) -> CMask {
         tick(Op::Cmp);

@@ -108,7 +108,9 @@ pub(crate) trait Lanes:
     fn sqrt(self) -> Self;
     /// Absolute value.
     fn abs(self) -> Self;
-    /// `f64::max` (for `o` not NaN: a NaN `self` gives `o`).
+    /// `self` where `self > o`, else `o`, as `maxpd`: `f64::max` for `o`
+    /// not NaN (a NaN `self` gives `o`), and `o` for two zeros of either
+    /// sign, so `x.max(0.0)` is `+0.0` for `x = -0.0` on every instruction set.
     fn max(self, o: Self) -> Self;
     /// `self < o`.
     fn lt(self, o: Self) -> Self::Mask;

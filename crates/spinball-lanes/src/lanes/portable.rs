@@ -79,7 +79,8 @@ impl Lanes for f64 {
     }
     #[inline(always)]
     fn max(self, o: f64) -> f64 {
-        f64::max(self, o)
+        // `maxpd`'s rule (`f64::max` leaves the sign of a zero unspecified).
+        if self > o { self } else { o }
     }
     #[inline(always)]
     fn lt(self, o: f64) -> bool {
