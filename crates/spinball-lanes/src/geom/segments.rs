@@ -25,13 +25,6 @@
 //! selected lane by lane (the one facing the ball), which saves most of a
 //! wall's arithmetic.
 //!
-//! A horizontal or vertical wall (a normal with an exactly zero component,
-//! as every wall of a table drawn on a grid has) leaves out of its dot
-//! products the product with that zero ([`Frame`]). The scalar adds that
-//! signed zero, which can change only the sign of a zero sum: no comparison
-//! sees that sign, and the distance's positive part (`+0.0` for either zero
-//! in both) erases it, so the hit stays bitwise the scalar's.
-//!
 //! [`SegmentTable`]: spinball_geometry::SegmentTable
 
 use std::f64::consts::TAU;
@@ -61,113 +54,6 @@ struct Flat {
     mny: f64,
     /// `length + slack`: the reach of the wall along itself.
     hi: f64,
-    /// How it lies (which products its dot products need).
-    lie: Lie,
-}
-
-/// How a flat wall lies: along an axis (its normal has an exactly zero
-/// component) or not.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Lie {
-    Oblique,
-    /// Normal `(±0, n_y)`, direction `(d_x, ±0)`.
-    Horizontal,
-    /// Normal `(n_x, ±0)`, direction `(±0, d_y)`.
-    Vertical,
-}
-
-impl Lie {
-    fn of(normal: DVec2) -> Self {
-        if normal.x == 0.0 {
-            Lie::Horizontal
-        } else if normal.y == 0.0 {
-            Lie::Vertical
-        } else {
-            Lie::Oblique
-        }
-    }
-}
-
-/// The dot products of a wall's frame for walls that lie one way (a zero
-/// size type per [`Lie`], so each kind of wall compiles to its own code):
-/// `x·c_x + y·c_y` exactly, except that a product with an exactly zero
-/// component (`±0` for finite `x`, `y`) is left out, which can change only
-/// the sign of a zero result.
-trait Frame {
-    /// Whether the normal's x component (and the direction's y) enters.
-    const NORMAL_X: bool;
-    /// Whether the normal's y component (and the direction's x) enters.
-    const NORMAL_Y: bool;
-    /// The dot product with the normal `(nx, ny)` (or its negation).
-    fn normal_dot<L: Lanes>(x: L, y: L, nx: L, ny: L) -> L;
-    /// The dot product with the direction `(dx, dy)`.
-    fn dir_dot<L: Lanes>(x: L, y: L, dx: L, dy: L) -> L;
-}
-
-/// [`Lie::Oblique`]: both products.
-struct Oblique;
-/// [`Lie::Horizontal`].
-struct Horizontal;
-/// [`Lie::Vertical`].
-struct Vertical;
-
-impl Frame for Oblique {
-    const NORMAL_X: bool = true;
-    const NORMAL_Y: bool = true;
-    #[inline(always)]
-    fn normal_dot<L: Lanes>(x: L, y: L, nx: L, ny: L) -> L {
-        x * nx + y * ny
-    }
-    #[inline(always)]
-    fn dir_dot<L: Lanes>(x: L, y: L, dx: L, dy: L) -> L {
-        x * dx + y * dy
-    }
-}
-
-impl Frame for Horizontal {
-    const NORMAL_X: bool = false;
-    const NORMAL_Y: bool = true;
-    #[inline(always)]
-    fn normal_dot<L: Lanes>(_: L, y: L, _: L, ny: L) -> L {
-        y * ny
-    }
-    #[inline(always)]
-    fn dir_dot<L: Lanes>(x: L, _: L, dx: L, _: L) -> L {
-        x * dx
-    }
-}
-
-impl Frame for Vertical {
-    const NORMAL_X: bool = true;
-    const NORMAL_Y: bool = false;
-    #[inline(always)]
-    fn normal_dot<L: Lanes>(x: L, _: L, nx: L, _: L) -> L {
-        x * nx
-    }
-    #[inline(always)]
-    fn dir_dot<L: Lanes>(_: L, y: L, _: L, dy: L) -> L {
-        y * dy
-    }
-}
-
-/// `$body` with the type `$F` the [`Frame`] of the [`Lie`] `$lie`.
-macro_rules! with_frame {
-    ($lie:expr, $F:ident => $body:expr) => {
-        match $lie {
-            Lie::Oblique => {
-                type $F = Oblique;
-                $body
-            }
-            Lie::Horizontal => {
-                type $F = Horizontal;
-                $body
-            }
-            Lie::Vertical => {
-                type $F = Vertical;
-                $body
-            }
-        }
-    };
 }
 
 impl Flat {
@@ -184,7 +70,6 @@ impl Flat {
             mnx: -normal.x,
             mny: -normal.y,
             hi: l.length() + slack,
-            lie: Lie::of(normal),
         }
     }
 
@@ -430,23 +315,17 @@ fn clamp<L: Lanes>(x: L, lo: L, hi: L) -> L {
 /// `vd = v·dir`: the lanes where it returns `Some`, and the undivided
 /// flight time's numerator.
 #[inline(always)]
-fn approach<L: Lanes, F: Frame>(
-    f: &FlatLanes<L>,
-    w: L,
-    vd: L,
-    lo: f64,
-    ray: &Ray<L>,
-) -> (L::Mask, L) {
+fn approach<L: Lanes>(f: &FlatLanes<L>, w: L, vd: L, lo: f64, ray: &Ray<L>) -> (L::Mask, L) {
     let zero = L::splat(0.0);
     let lo = L::splat(lo);
     let relx = ray.x - f.sx;
     let rely = ray.y - f.sy;
-    let dist = F::normal_dot(relx, rely, f.nx, f.ny);
+    let dist = relx * f.nx + rely * f.ny;
     // Moving into the wall, not behind it (a NaN distance is not "behind").
     let ok = dist.test::<{ cmp::NLT }>(lo, w.gt(zero));
     // The positive part (`+0.0` for either zero, as the scalar's).
     let dist = dist.max(zero);
-    let along_w = F::dir_dot(relx, rely, f.dx, f.dy) * w + vd * dist;
+    let along_w = (relx * f.dx + rely * f.dy) * w + vd * dist;
     let ok = along_w.test::<{ cmp::LE }>(f.hi * w, along_w.test::<{ cmp::GE }>(lo * w, ok));
     (ok, dist)
 }
@@ -632,57 +511,44 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
         let (mut w, mut vd) = (zero, zero);
         for step in self.steps {
             match step {
-                Step::One(f, shares) => with_frame!(f.lie, F => {
+                Step::One(f, shares) => {
                     let c = f.lanes::<L>();
                     if !shares {
-                        let (mnx, mny) = (L::splat(f.mnx), L::splat(f.mny));
-                        w = F::normal_dot(vx, vy, mnx, mny);
-                        vd = F::dir_dot(vx, vy, c.dx, c.dy);
+                        w = vx * f.mnx + vy * f.mny;
+                        vd = vx * c.dx + vy * c.dy;
                     }
-                    let (ok, dist) = approach::<L, F>(&c, w, vd, self.lo, ray);
+                    let (ok, dist) = approach(&c, w, vd, self.lo, ray);
                     // Every wall visited before this one has a lower id, so
                     // a tie never goes to it: strictly earlier suffices.
                     let take = best.beaten::<false>(ok, dist, w, c.id);
                     best.keep(take, dist, w, c.id);
-                }),
-                // Opposite normals: both walls lie the same way.
+                }
                 Step::Pair(a, b) => {
-                    with_frame!(a.lie, F => self.pair::<L, F>(a, b, ray, &mut best))
+                    // `−(v·n)` of `a`; that of `b` is its negation, so the
+                    // wall facing the ball (if any) has divisor `|w|`.
+                    let wa = vx * a.mnx + vy * a.mny;
+                    let faces_a = wa.gt(zero);
+                    let (ca, cb) = (a.lanes::<L>(), b.lanes::<L>());
+                    let sel = |p: L, q: L| L::select(faces_a, p, q);
+                    let c = FlatLanes {
+                        id: sel(ca.id, cb.id),
+                        sx: sel(ca.sx, cb.sx),
+                        sy: sel(ca.sy, cb.sy),
+                        dx: sel(ca.dx, cb.dx),
+                        dy: sel(ca.dy, cb.dy),
+                        nx: sel(ca.nx, cb.nx),
+                        ny: sel(ca.ny, cb.ny),
+                        hi: sel(ca.hi, cb.hi),
+                    };
+                    let w = wa.abs();
+                    let vd = vx * c.dx + vy * c.dy;
+                    let (ok, dist) = approach(&c, w, vd, self.lo, ray);
+                    let take = best.beaten::<true>(ok, dist, w, c.id);
+                    best.keep(take, dist, w, c.id);
                 }
             }
         }
         best
-    }
-
-    /// A pair of flat walls with opposite normals, cast as the one facing
-    /// the ball, lane by lane.
-    #[inline(always)]
-    fn pair<L: Lanes, F: Frame>(&self, a: &Flat, b: &Flat, ray: &Ray<L>, best: &mut Earliest<L>) {
-        let zero = L::splat(0.0);
-        let (vx, vy) = (ray.vx, ray.vy);
-        // `−(v·n)` of `a`; that of `b` is its negation, so the wall facing
-        // the ball (if any) has divisor `|w|`.
-        let wa = F::normal_dot(vx, vy, L::splat(a.mnx), L::splat(a.mny));
-        let faces_a = wa.gt(zero);
-        let (ca, cb) = (a.lanes::<L>(), b.lanes::<L>());
-        let sel = |p: L, q: L| L::select(faces_a, p, q);
-        // A component the frame leaves out is not selected.
-        let sel_if = |used: bool, p: L, q: L| if used { sel(p, q) } else { p };
-        let c = FlatLanes {
-            id: sel(ca.id, cb.id),
-            sx: sel(ca.sx, cb.sx),
-            sy: sel(ca.sy, cb.sy),
-            dx: sel_if(F::NORMAL_Y, ca.dx, cb.dx),
-            dy: sel_if(F::NORMAL_X, ca.dy, cb.dy),
-            nx: sel_if(F::NORMAL_X, ca.nx, cb.nx),
-            ny: sel_if(F::NORMAL_Y, ca.ny, cb.ny),
-            hi: sel(ca.hi, cb.hi),
-        };
-        let w = wa.abs();
-        let vd = F::dir_dot(vx, vy, c.dx, c.dy);
-        let (ok, dist) = approach::<L, F>(&c, w, vd, self.lo, ray);
-        let take = best.beaten::<true>(ok, dist, w, c.id);
-        best.keep(take, dist, w, c.id);
     }
 }
 
@@ -899,34 +765,6 @@ pub(crate) mod tests {
     }
 
     #[test]
-    fn walls_along_the_axes_are_found() {
-        let lies = |t: &SegmentTable| -> Vec<Lie> {
-            let l = LaneSegments::new(t);
-            l.steps
-                .iter()
-                .map(|st| match st {
-                    Step::One(f, _) => f.lie,
-                    Step::Pair(a, b) => {
-                        assert_eq!(a.lie, b.lie, "a pair lies one way");
-                        a.lie
-                    }
-                })
-                .collect()
-        };
-        use Lie::{Horizontal, Oblique, Vertical};
-        // Floors and the cap's floor, then the stem's sides.
-        assert_eq!(
-            lies(&mushroom(1.0, 0.3, 1.0)),
-            [Horizontal, Horizontal, Horizontal, Vertical]
-        );
-        assert_eq!(lies(&sinai(2.0, 1.0)), [Horizontal, Vertical]);
-        // Every wall of the L lies along an axis.
-        let l = lies(&l_shape());
-        assert!(!l.is_empty() && l.iter().all(|&l| l != Oblique), "{l:?}");
-        assert!(lies(&twenty_gon()).iter().all(|&l| l == Oblique));
-    }
-
-    #[test]
     fn stadium_of_segments_casts_agree_including_junctions() {
         for a in [1.0, 0.2, 4.0] {
             check_table(
@@ -986,8 +824,7 @@ pub(crate) mod tests {
                 (d(0.0, 0.5), d(0.0, -1.0)),
                 (d(0.9, 0.1), d(-1.0, -0.1)),
                 // On the horizontal and vertical walls, with zeros of both
-                // signs (the lanes leave the products with the normals'
-                // zero components out).
+                // signs.
                 (d(0.5, -0.0), d(-1.0, 0.5)),
                 (d(0.5, 0.0), d(0.3, -1.0)),
                 (d(0.5, -0.0), d(0.3, -1.0)),
