@@ -146,9 +146,9 @@ impl LineSegment {
         if dist < -slack {
             return None;
         }
-        // The positive part, `+0.0` for either zero (as `maxpd`), so a
-        // kernel that leaves out a product with an exactly zero normal
-        // component (an axis-aligned wall) still finds bitwise this `dist`.
+        // The positive part, `+0.0` for either zero, as the lanes' `max`
+        // (`maxpd`) computes it on every instruction set (`f64::max` leaves
+        // the sign of a zero unspecified).
         let dist = if dist > 0.0 { dist } else { 0.0 };
         let along_w = rel.dot(self.dir) * w + velocity.dot(self.dir) * dist;
         if !(along_w >= -slack * w && along_w <= (self.length + slack) * w) {
@@ -230,8 +230,7 @@ mod tests {
     fn a_ball_on_the_line_is_at_distance_plus_zero() {
         // A wall whose normal, (−0.8, −0.6), has two negative components:
         // from its start the dot product is (+0)(−0.8) + (+0)(−0.6) = −0,
-        // and the clamped distance is +0 (as the lanes' `maxpd` gives it,
-        // whichever products a lane kernel leaves out).
+        // and the clamped distance is +0 (as the lanes' `maxpd` gives it).
         let wall = LineSegment::new(DVec2::ZERO, DVec2::new(-0.6, 0.8)).unwrap();
         let n = wall.normal();
         assert!(n.x < 0.0 && n.y < 0.0, "{n:?}");
