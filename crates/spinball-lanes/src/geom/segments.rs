@@ -553,9 +553,12 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
 }
 
 impl<const CURVED: bool> Segments<'_, CURVED> {
-    /// The cast of a table with arcs; `UNIT`: every arc has radius 1.
+    /// The cast of a table with arcs. The search is the same whatever the
+    /// radii; only the landing differs for a table whose arcs all have
+    /// radius 1, so the branch on that comes after the search (one copy of
+    /// the search per kernel, not two).
     #[inline(always)]
-    fn curved<L: Lanes, const UNIT: bool>(&self, ray: &Ray<L>) -> LaneHit<L> {
+    fn curved<L: Lanes>(&self, ray: &Ray<L>) -> LaneHit<L> {
         let flat = self.flats(ray);
         let round = self.arcs(ray);
         // The earliest arc against the earliest flat wall, cross-multiplied:
@@ -574,7 +577,11 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
         // palettes hold zeros at the other kind's ids; those lanes are
         // discarded).
         let wall = L::select(arc_wins, round.id, flat.id);
-        land::<L, UNIT>(self.landing, ray, time, wall, arc_wins)
+        if self.unit {
+            land::<L, true>(self.landing, ray, time, wall, arc_wins)
+        } else {
+            land::<L, false>(self.landing, ray, time, wall, arc_wins)
+        }
     }
 }
 
@@ -589,12 +596,7 @@ impl<const CURVED: bool> Geom for Segments<'_, CURVED> {
             return land_flat(self.landing, &ray, flat.dist / flat.speed, flat.id);
         }
         // `|v|²` serves every arc.
-        let ray = Ray::new_undivided(x, y, vx, vy);
-        if self.unit {
-            self.curved::<L, true>(&ray)
-        } else {
-            self.curved::<L, false>(&ray)
-        }
+        self.curved(&Ray::new_undivided(x, y, vx, vy))
     }
 }
 
