@@ -25,6 +25,10 @@
 //! selected lane by lane (the one facing the ball), which saves most of a
 //! wall's arithmetic.
 //!
+//! A flat wall along an axis (horizontal or vertical, alone or in a pair)
+//! is cast in the ball's coordinates across and along it, one product per
+//! dot product: the scalar's other products are with exact zeros.
+//!
 //! [`SegmentTable`]: spinball_geometry::SegmentTable
 
 use std::f64::consts::TAU;
@@ -99,6 +103,110 @@ struct FlatLanes<L: Lanes> {
     nx: L,
     ny: L,
     hi: L,
+}
+
+/// A flat wall along an axis: its direction and normal each have one
+/// component exactly zero, so of `LineSegment::approach`'s four dot products
+/// each is one product (the other adds a signed zero, which can only change
+/// the sign of a zero sum: no comparison sees it, and the distance is
+/// clamped to its positive part, `+0.0` for either zero). Horizontal and
+/// vertical walls share one form, in a frame that names the ball's
+/// coordinates across and along the wall ([`AxisRay`]), so the kernels hold
+/// one more copy of a flat wall's cast, not two.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Axis {
+    /// Wall id.
+    id: f64,
+    /// The wall runs along y (its normal along x); else along x.
+    upright: bool,
+    /// The start's coordinates across the wall and along it.
+    sn: f64,
+    st: f64,
+    /// The direction's component along the wall, the normal's across it,
+    /// and minus that.
+    d: f64,
+    n: f64,
+    mn: f64,
+    /// `length + slack`.
+    hi: f64,
+}
+
+impl Axis {
+    /// The wall in axis form, if it lies along an axis.
+    fn new(f: &Flat) -> Option<Self> {
+        let (upright, sn, st, d, n) = if f.ny == 0.0 && f.dx == 0.0 {
+            (true, f.sx, f.sy, f.dy, f.nx)
+        } else if f.nx == 0.0 && f.dy == 0.0 {
+            (false, f.sy, f.sx, f.dx, f.ny)
+        } else {
+            return None;
+        };
+        Some(Axis {
+            id: f.id,
+            upright,
+            sn,
+            st,
+            d,
+            n,
+            mn: -n,
+            hi: f.hi,
+        })
+    }
+
+    #[inline(always)]
+    fn lanes<L: Lanes>(&self) -> AxisLanes<L> {
+        AxisLanes {
+            id: L::splat(self.id),
+            sn: L::splat(self.sn),
+            st: L::splat(self.st),
+            d: L::splat(self.d),
+            n: L::splat(self.n),
+            hi: L::splat(self.hi),
+        }
+    }
+}
+
+/// An axis wall's constants per lane (the two walls of a pair differ by
+/// lane).
+#[derive(Clone, Copy, Debug)]
+struct AxisLanes<L: Lanes> {
+    id: L,
+    sn: L,
+    st: L,
+    d: L,
+    n: L,
+    hi: L,
+}
+
+/// The ball's position and velocity across an axis wall (`n`) and along
+/// it (`t`): `(x, y)` for a vertical wall, `(y, x)` for a horizontal one.
+#[derive(Clone, Copy, Debug)]
+struct AxisRay<L: Lanes> {
+    pn: L,
+    pt: L,
+    vn: L,
+    vt: L,
+}
+
+impl<L: Lanes> AxisRay<L> {
+    #[inline(always)]
+    fn new(ray: &Ray<L>, upright: bool) -> Self {
+        if upright {
+            AxisRay {
+                pn: ray.x,
+                pt: ray.y,
+                vn: ray.vx,
+                vt: ray.vy,
+            }
+        } else {
+            AxisRay {
+                pn: ray.y,
+                pt: ray.x,
+                vn: ray.vy,
+                vt: ray.vx,
+            }
+        }
+    }
 }
 
 /// An arc's constants, as `ArcSegment::approach` and `land` use them.
@@ -211,6 +319,10 @@ enum Step {
     One(Flat, bool),
     /// Two flat walls with opposite normals (lower id first).
     Pair(Flat, Flat),
+    /// A flat wall along an axis.
+    AxisOne(Axis),
+    /// Two walls along the same axis with opposite normals (lower id first).
+    AxisPair(Axis, Axis),
 }
 
 /// A [`SegmentTable`] compiled for the kernels: every wall's constants,
@@ -242,15 +354,22 @@ impl LaneSegments {
         };
         let mut steps: Vec<Step> = Vec::new();
         for v in table.flat_visits() {
+            let axis = |i: usize| Axis::new(&flat(i));
             steps.push(match *v {
-                FlatVisit::One(i) => {
-                    let f = flat(i);
-                    let bits = |w: &Flat| (w.nx.to_bits(), w.ny.to_bits());
-                    let shares =
-                        matches!(steps.last(), Some(Step::One(p, _)) if bits(p) == bits(&f));
-                    Step::One(f, shares)
-                }
-                FlatVisit::Pair(i, j) => Step::Pair(flat(i), flat(j)),
+                FlatVisit::One(i) => match axis(i) {
+                    Some(a) => Step::AxisOne(a),
+                    None => {
+                        let f = flat(i);
+                        let bits = |w: &Flat| (w.nx.to_bits(), w.ny.to_bits());
+                        let shares =
+                            matches!(steps.last(), Some(Step::One(p, _)) if bits(p) == bits(&f));
+                        Step::One(f, shares)
+                    }
+                },
+                FlatVisit::Pair(i, j) => match (axis(i), axis(j)) {
+                    (Some(a), Some(b)) => Step::AxisPair(a, b),
+                    _ => Step::Pair(flat(i), flat(j)),
+                },
             });
         }
         let arcs = walls
@@ -316,17 +435,34 @@ fn clamp<L: Lanes>(x: L, lo: L, hi: L) -> L {
 /// flight time's numerator.
 #[inline(always)]
 fn approach<L: Lanes>(f: &FlatLanes<L>, w: L, vd: L, lo: f64, ray: &Ray<L>) -> (L::Mask, L) {
-    let zero = L::splat(0.0);
-    let lo = L::splat(lo);
     let relx = ray.x - f.sx;
     let rely = ray.y - f.sy;
     let dist = relx * f.nx + rely * f.ny;
+    let along = relx * f.dx + rely * f.dy;
+    accept(dist, along, f.hi, w, vd, lo)
+}
+
+/// [`approach`] for a wall along an axis, in the ray's frame across and
+/// along it (`w = −(v·n)`, `vd = v·dir` in that frame too).
+#[inline(always)]
+fn approach_axis<L: Lanes>(f: &AxisLanes<L>, w: L, vd: L, lo: f64, r: &AxisRay<L>) -> (L::Mask, L) {
+    let dist = (r.pn - f.sn) * f.n;
+    let along = (r.pt - f.st) * f.d;
+    accept(dist, along, f.hi, w, vd, lo)
+}
+
+/// `LineSegment::approach`'s tests from the ball's distance `dist` from the
+/// wall's line and its offset `along` it from the start.
+#[inline(always)]
+fn accept<L: Lanes>(dist: L, along: L, hi: L, w: L, vd: L, lo: f64) -> (L::Mask, L) {
+    let zero = L::splat(0.0);
+    let lo = L::splat(lo);
     // Moving into the wall, not behind it (a NaN distance is not "behind").
     let ok = dist.test::<{ cmp::NLT }>(lo, w.gt(zero));
     // The positive part (`+0.0` for either zero, as the scalar's).
     let dist = dist.max(zero);
-    let along_w = (relx * f.dx + rely * f.dy) * w + vd * dist;
-    let ok = along_w.test::<{ cmp::LE }>(f.hi * w, along_w.test::<{ cmp::GE }>(lo * w, ok));
+    let along_w = along * w + vd * dist;
+    let ok = along_w.test::<{ cmp::LE }>(hi * w, along_w.test::<{ cmp::GE }>(lo * w, ok));
     (ok, dist)
 }
 
@@ -546,6 +682,35 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
                     let take = best.beaten::<true>(ok, dist, w, c.id);
                     best.keep(take, dist, w, c.id);
                 }
+                Step::AxisOne(a) => {
+                    let r = AxisRay::new(ray, a.upright);
+                    let c = a.lanes::<L>();
+                    let w = r.vn * L::splat(a.mn);
+                    let vd = r.vt * c.d;
+                    let (ok, dist) = approach_axis(&c, w, vd, self.lo, &r);
+                    let take = best.beaten::<false>(ok, dist, w, c.id);
+                    best.keep(take, dist, w, c.id);
+                }
+                Step::AxisPair(a, b) => {
+                    let r = AxisRay::new(ray, a.upright);
+                    let wa = r.vn * L::splat(a.mn);
+                    let faces_a = wa.gt(zero);
+                    let (ca, cb) = (a.lanes::<L>(), b.lanes::<L>());
+                    let sel = |p: L, q: L| L::select(faces_a, p, q);
+                    let c = AxisLanes {
+                        id: sel(ca.id, cb.id),
+                        sn: sel(ca.sn, cb.sn),
+                        st: sel(ca.st, cb.st),
+                        d: sel(ca.d, cb.d),
+                        n: sel(ca.n, cb.n),
+                        hi: sel(ca.hi, cb.hi),
+                    };
+                    let w = wa.abs();
+                    let vd = r.vt * c.d;
+                    let (ok, dist) = approach_axis(&c, w, vd, self.lo, &r);
+                    let take = best.beaten::<true>(ok, dist, w, c.id);
+                    best.keep(take, dist, w, c.id);
+                }
             }
         }
         best
@@ -741,8 +906,15 @@ pub(crate) mod tests {
         }
     }
 
+    /// A triangle on a horizontal base whose right side is two collinear
+    /// walls: a wall along an axis among oblique ones, and an oblique wall
+    /// that shares its neighbour's normal.
+    fn split_triangle() -> SegmentTable {
+        SegmentTable::polygon(&[d(-1.0, 0.0), d(1.0, 0.0), d(0.5, 0.5), d(0.0, 1.0)]).unwrap()
+    }
+
     #[test]
-    fn pairs_are_found_and_ids_kept() {
+    fn pairs_and_axis_walls_are_found_and_ids_kept() {
         let ids = |t: &SegmentTable| -> Vec<String> {
             let l = LaneSegments::new(t);
             let flats = l.steps.iter().map(|st| match st {
@@ -750,19 +922,42 @@ pub(crate) mod tests {
                 // Reuses the previous wall's `−(v·n)` and `v·dir`.
                 Step::One(f, true) => format!("{}~", f.id),
                 Step::Pair(a, b) => format!("{}+{}", a.id, b.id),
+                // Walls along an axis: `a`, and `|` if vertical.
+                Step::AxisOne(a) => format!("a{}{}", a.id, if a.upright { "|" } else { "" }),
+                Step::AxisPair(a, b) => {
+                    format!("a{}+{}{}", a.id, b.id, if a.upright { "|" } else { "" })
+                }
             });
             let arcs = l.arcs.iter().map(|c| format!("arc{}", c.id));
             flats.chain(arcs).collect()
         };
-        // Stadium: the flat walls 0 and 2 are a pair, cast at 2.
-        assert_eq!(ids(&stadium(1.0)), ["0+2", "arc1", "arc3"]);
+        // Stadium: the flat walls 0 and 2 are a horizontal pair, cast at 2.
+        assert_eq!(ids(&stadium(1.0)), ["a0+2", "arc1", "arc3"]);
         // Sinai: (0, 2) and (1, 3), then the hole.
-        assert_eq!(ids(&sinai(2.0, 1.0)), ["0+2", "1+3", "arc4"]);
+        assert_eq!(ids(&sinai(2.0, 1.0)), ["a0+2", "a1+3|", "arc4"]);
         // Mushroom: only the stem's sides (1, 5) face opposite ways; the
         // stem's floor (0) and the cap's floor (2, 4) face the same way.
         assert_eq!(
             ids(&mushroom(1.0, 0.3, 1.0)),
-            ["0", "2~", "4~", "1+5", "arc3"]
+            ["a0", "a2", "a4", "a1+5|", "arc3"]
+        );
+        // A square standing on a corner: two oblique pairs.
+        let diamond =
+            SegmentTable::polygon(&[d(1.0, 0.0), d(0.0, 1.0), d(-1.0, 0.0), d(0.0, -1.0)]).unwrap();
+        assert_eq!(ids(&diamond), ["0+2", "1+3"]);
+        // The base along the x axis; walls 1 and 2 share a normal.
+        assert_eq!(ids(&split_triangle()), ["a0", "1", "2~", "3"]);
+    }
+
+    #[test]
+    fn a_table_mixing_axis_and_oblique_walls_casts_agree() {
+        check_table(
+            &split_triangle(),
+            &[
+                (d(0.0, 0.5), d(0.0, -1.0)),
+                (d(0.9, 0.05), d(0.3, -1.0)),
+                (d(0.0, 0.2), d(1.0, 1.0)),
+            ],
         );
     }
 
