@@ -12,12 +12,13 @@
 //! as an error at the end of the run.
 //!
 //! One file per table ([`circle`], [`rectangle`], [`stadium`], [`sinai`],
-//! [`segments`]), the circle arithmetic they share in [`round`], and the
-//! test harness that holds each of them to its scalar cast in `agree`.
+//! [`segments`], whose flat walls are cast in [`flat_walls`]), the circle
+//! arithmetic they share in [`round`], and the test harness that holds each of them to its scalar cast in `agree`.
 //!
 //! [`Boundary::cast`]: spinball_geometry::Boundary::cast
 
 mod circle;
+mod flat_walls;
 mod rectangle;
 mod round;
 mod segments;

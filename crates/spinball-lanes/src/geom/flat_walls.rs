@@ -1,0 +1,399 @@
+//! The flat walls of a table built from segments, in lanes: the forms a
+//! flat wall is cast in and the search for the earliest.
+//!
+//! A flat wall is cast as `LineSegment::approach` casts it, operation for
+//! operation, in one of four forms chosen when the table is compiled:
+//! - alone, any direction ([`Step::One`]), reusing `−(v·n)` and `v·dir` of
+//!   the wall before it when the two normals are bitwise the same;
+//! - two walls with exactly opposite normals as one, whose constants are
+//!   selected lane by lane (the wall facing the ball; [`Step::Pair`]);
+//! - along an axis, alone or paired ([`Step::AxisOne`], [`Step::AxisPair`]):
+//!   the direction and the normal each have one component exactly zero, so
+//!   each of the cast's dot products is one product, in the ball's
+//!   coordinates across and along the wall ([`AxisRay`]; one form for both
+//!   orientations, so the kernels hold one more copy of the cast, not two).
+//!
+//! The earliest wall is kept as an undivided fraction (`dist / speed`) and
+//! compared cross-multiplied, as the scalar `SegmentTable::cast` compares
+//! its flat walls, in the same order and with the same tie rule.
+
+use spinball_geometry::{FlatVisit, LineSegment, Segment, SegmentTable};
+
+use super::round::Ray;
+use crate::lanes::{Lanes, MaskOps, cmp};
+
+/// A flat wall's constants, as `LineSegment::approach` and `land` use them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Flat {
+    /// Wall id.
+    pub(super) id: f64,
+    /// Start point.
+    sx: f64,
+    sy: f64,
+    /// Unit direction.
+    dx: f64,
+    dy: f64,
+    /// Unit inward normal.
+    nx: f64,
+    ny: f64,
+    /// Minus the normal: `v·(−n)` is `−(v·n)` exactly.
+    mnx: f64,
+    mny: f64,
+    /// `length + slack`: the reach of the wall along itself.
+    hi: f64,
+}
+
+impl Flat {
+    fn new(id: usize, l: &LineSegment, slack: f64) -> Self {
+        let (start, dir, normal) = (l.start(), l.direction(), l.normal());
+        Flat {
+            id: id as f64,
+            sx: start.x,
+            sy: start.y,
+            dx: dir.x,
+            dy: dir.y,
+            nx: normal.x,
+            ny: normal.y,
+            mnx: -normal.x,
+            mny: -normal.y,
+            hi: l.length() + slack,
+        }
+    }
+
+    #[inline(always)]
+    fn lanes<L: Lanes>(&self) -> FlatLanes<L> {
+        FlatLanes {
+            id: L::splat(self.id),
+            sx: L::splat(self.sx),
+            sy: L::splat(self.sy),
+            dx: L::splat(self.dx),
+            dy: L::splat(self.dy),
+            nx: L::splat(self.nx),
+            ny: L::splat(self.ny),
+            hi: L::splat(self.hi),
+        }
+    }
+}
+
+/// A flat wall's constants per lane (the two walls of a pair differ by lane).
+#[derive(Clone, Copy, Debug)]
+struct FlatLanes<L: Lanes> {
+    id: L,
+    sx: L,
+    sy: L,
+    dx: L,
+    dy: L,
+    nx: L,
+    ny: L,
+    hi: L,
+}
+
+/// A flat wall along an axis: its direction and normal each have one
+/// component exactly zero, so of `LineSegment::approach`'s four dot products
+/// each is one product (the other adds a signed zero, which can only change
+/// the sign of a zero sum: no comparison sees it, and the distance is
+/// clamped to its positive part, `+0.0` for either zero). Horizontal and
+/// vertical walls share one form, in a frame that names the ball's
+/// coordinates across and along the wall ([`AxisRay`]), so the kernels hold
+/// one more copy of a flat wall's cast, not two.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Axis {
+    /// Wall id.
+    pub(super) id: f64,
+    /// The wall runs along y (its normal along x); else along x.
+    pub(super) upright: bool,
+    /// The start's coordinates across the wall and along it.
+    sn: f64,
+    st: f64,
+    /// The direction's component along the wall, the normal's across it,
+    /// and minus that.
+    d: f64,
+    n: f64,
+    mn: f64,
+    /// `length + slack`.
+    hi: f64,
+}
+
+impl Axis {
+    /// The wall in axis form, if it lies along an axis.
+    fn new(f: &Flat) -> Option<Self> {
+        let (upright, sn, st, d, n) = if f.ny == 0.0 && f.dx == 0.0 {
+            (true, f.sx, f.sy, f.dy, f.nx)
+        } else if f.nx == 0.0 && f.dy == 0.0 {
+            (false, f.sy, f.sx, f.dx, f.ny)
+        } else {
+            return None;
+        };
+        Some(Axis {
+            id: f.id,
+            upright,
+            sn,
+            st,
+            d,
+            n,
+            mn: -n,
+            hi: f.hi,
+        })
+    }
+
+    #[inline(always)]
+    fn lanes<L: Lanes>(&self) -> AxisLanes<L> {
+        AxisLanes {
+            id: L::splat(self.id),
+            sn: L::splat(self.sn),
+            st: L::splat(self.st),
+            d: L::splat(self.d),
+            n: L::splat(self.n),
+            hi: L::splat(self.hi),
+        }
+    }
+}
+
+/// An axis wall's constants per lane (the two walls of a pair differ by
+/// lane).
+#[derive(Clone, Copy, Debug)]
+struct AxisLanes<L: Lanes> {
+    id: L,
+    sn: L,
+    st: L,
+    d: L,
+    n: L,
+    hi: L,
+}
+
+/// The ball's position and velocity across an axis wall (`n`) and along
+/// it (`t`): `(x, y)` for a vertical wall, `(y, x)` for a horizontal one.
+#[derive(Clone, Copy, Debug)]
+struct AxisRay<L: Lanes> {
+    pn: L,
+    pt: L,
+    vn: L,
+    vt: L,
+}
+
+impl<L: Lanes> AxisRay<L> {
+    #[inline(always)]
+    fn new(ray: &Ray<L>, upright: bool) -> Self {
+        if upright {
+            AxisRay {
+                pn: ray.x,
+                pt: ray.y,
+                vn: ray.vx,
+                vt: ray.vy,
+            }
+        } else {
+            AxisRay {
+                pn: ray.y,
+                pt: ray.x,
+                vn: ray.vy,
+                vt: ray.vx,
+            }
+        }
+    }
+}
+
+/// One step of the flat walls' visit order.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Step {
+    /// A flat wall; `true` if the step before is a flat wall with bitwise
+    /// the same normal (its `−(v·n)` and `v·dir` are then reused).
+    One(Flat, bool),
+    /// Two flat walls with opposite normals (lower id first).
+    Pair(Flat, Flat),
+    /// A flat wall along an axis.
+    AxisOne(Axis),
+    /// Two walls along the same axis with opposite normals (lower id first).
+    AxisPair(Axis, Axis),
+}
+
+/// The flat walls of `table` in the order its cast visits them
+/// (`SegmentTable::flat_visits`), each in the form it is cast in.
+pub(super) fn steps(table: &SegmentTable) -> Vec<Step> {
+    let (slack, walls) = (table.slack(), table.walls());
+    let flat = |i: usize| match &walls[i] {
+        Segment::Line(l) => Flat::new(i, l, slack),
+        Segment::Arc(_) => unreachable!("flat visits are lines"),
+    };
+    let mut steps: Vec<Step> = Vec::new();
+    for v in table.flat_visits() {
+        let axis = |i: usize| Axis::new(&flat(i));
+        steps.push(match *v {
+            FlatVisit::One(i) => match axis(i) {
+                Some(a) => Step::AxisOne(a),
+                None => {
+                    let f = flat(i);
+                    let bits = |w: &Flat| (w.nx.to_bits(), w.ny.to_bits());
+                    let shares =
+                        matches!(steps.last(), Some(Step::One(p, _)) if bits(p) == bits(&f));
+                    Step::One(f, shares)
+                }
+            },
+            FlatVisit::Pair(i, j) => match (axis(i), axis(j)) {
+                (Some(a), Some(b)) => {
+                    debug_assert_eq!(a.upright, b.upright, "opposite normals");
+                    Step::AxisPair(a, b)
+                }
+                _ => Step::Pair(flat(i), flat(j)),
+            },
+        });
+    }
+    steps
+}
+
+/// `LineSegment::approach`, lane by lane, given `w = −(v·n)` and
+/// `vd = v·dir`: the lanes where it returns `Some`, and the undivided
+/// flight time's numerator.
+#[inline(always)]
+fn approach<L: Lanes>(f: &FlatLanes<L>, w: L, vd: L, lo: f64, ray: &Ray<L>) -> (L::Mask, L) {
+    let relx = ray.x - f.sx;
+    let rely = ray.y - f.sy;
+    let dist = relx * f.nx + rely * f.ny;
+    let along = relx * f.dx + rely * f.dy;
+    accept(dist, along, f.hi, w, vd, lo)
+}
+
+/// [`approach`] for a wall along an axis, in the ray's frame across and
+/// along it (`w = −(v·n)`, `vd = v·dir` in that frame too).
+#[inline(always)]
+fn approach_axis<L: Lanes>(f: &AxisLanes<L>, w: L, vd: L, lo: f64, r: &AxisRay<L>) -> (L::Mask, L) {
+    let dist = (r.pn - f.sn) * f.n;
+    let along = (r.pt - f.st) * f.d;
+    accept(dist, along, f.hi, w, vd, lo)
+}
+
+/// `LineSegment::approach`'s tests from the ball's distance `dist` from the
+/// wall's line and its offset `along` it from the start.
+#[inline(always)]
+fn accept<L: Lanes>(dist: L, along: L, hi: L, w: L, vd: L, lo: f64) -> (L::Mask, L) {
+    let zero = L::splat(0.0);
+    let lo = L::splat(lo);
+    // Moving into the wall, not behind it (a NaN distance is not "behind").
+    let ok = dist.test::<{ cmp::NLT }>(lo, w.gt(zero));
+    // The positive part (`+0.0` for either zero, as the scalar's).
+    let dist = dist.max(zero);
+    let along_w = along * w + vd * dist;
+    let ok = along_w.test::<{ cmp::LE }>(hi * w, along_w.test::<{ cmp::GE }>(lo * w, ok));
+    (ok, dist)
+}
+
+/// The earliest flat wall so far, lane by lane: its undivided flight time
+/// (`dist / speed`; `dist` NaN while there is none) and its id.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Earliest<L: Lanes> {
+    pub(super) dist: L,
+    pub(super) speed: L,
+    pub(super) id: L,
+}
+
+impl<L: Lanes> Earliest<L> {
+    /// The lanes of `ok` where the candidate `(dist, w)` of wall `id` comes
+    /// first: strictly earlier (`dist·speed' < dist'·w`, any candidate while
+    /// there is none), or, if `TIES`, as early with a lower id.
+    #[inline(always)]
+    fn beaten<const TIES: bool>(&self, ok: L::Mask, dist: L, w: L, id: L) -> L::Mask {
+        let (x, y) = (dist * self.speed, self.dist * w);
+        if TIES {
+            ok.and(
+                y.compare::<{ cmp::NLE }>(x)
+                    .or(id.test::<{ cmp::LT }>(self.id, x.eq(y))),
+            )
+        } else {
+            y.test::<{ cmp::NLE }>(x, ok)
+        }
+    }
+
+    #[inline(always)]
+    fn keep(&mut self, take: L::Mask, dist: L, w: L, id: L) {
+        self.dist = L::select(take, dist, self.dist);
+        self.speed = L::select(take, w, self.speed);
+        self.id = L::select(take, id, self.id);
+    }
+}
+
+/// The earliest flat wall of every lane: the walls of `steps` cast in
+/// order (`lo`: minus the table's slack).
+#[inline(always)]
+pub(super) fn earliest<L: Lanes>(steps: &[Step], lo: f64, ray: &Ray<L>) -> Earliest<L> {
+    let zero = L::splat(0.0);
+    let (vx, vy) = (ray.vx, ray.vy);
+    let mut best = Earliest {
+        dist: L::splat(f64::NAN),
+        speed: L::splat(1.0),
+        id: zero,
+    };
+    // `−(v·n)` and `v·dir` of the last flat wall cast alone.
+    let (mut w, mut vd) = (zero, zero);
+    for step in steps {
+        match step {
+            Step::One(f, shares) => {
+                let c = f.lanes::<L>();
+                if !shares {
+                    w = vx * f.mnx + vy * f.mny;
+                    vd = vx * c.dx + vy * c.dy;
+                }
+                let (ok, dist) = approach(&c, w, vd, lo, ray);
+                // Every wall visited before this one has a lower id, so
+                // a tie never goes to it: strictly earlier suffices.
+                let take = best.beaten::<false>(ok, dist, w, c.id);
+                best.keep(take, dist, w, c.id);
+            }
+            Step::Pair(a, b) => {
+                // `−(v·n)` of `a`; that of `b` is its negation, so the
+                // wall facing the ball (if any) has divisor `|w|`.
+                let wa = vx * a.mnx + vy * a.mny;
+                let faces_a = wa.gt(zero);
+                let (ca, cb) = (a.lanes::<L>(), b.lanes::<L>());
+                let sel = |p: L, q: L| L::select(faces_a, p, q);
+                let c = FlatLanes {
+                    id: sel(ca.id, cb.id),
+                    sx: sel(ca.sx, cb.sx),
+                    sy: sel(ca.sy, cb.sy),
+                    dx: sel(ca.dx, cb.dx),
+                    dy: sel(ca.dy, cb.dy),
+                    nx: sel(ca.nx, cb.nx),
+                    ny: sel(ca.ny, cb.ny),
+                    hi: sel(ca.hi, cb.hi),
+                };
+                let w = wa.abs();
+                let vd = vx * c.dx + vy * c.dy;
+                let (ok, dist) = approach(&c, w, vd, lo, ray);
+                let take = best.beaten::<true>(ok, dist, w, c.id);
+                best.keep(take, dist, w, c.id);
+            }
+            Step::AxisOne(a) => {
+                let r = AxisRay::new(ray, a.upright);
+                let c = a.lanes::<L>();
+                let w = r.vn * L::splat(a.mn);
+                let vd = r.vt * c.d;
+                let (ok, dist) = approach_axis(&c, w, vd, lo, &r);
+                // Visited in the same order as `Step::One`: strictly
+                // earlier suffices.
+                let take = best.beaten::<false>(ok, dist, w, c.id);
+                best.keep(take, dist, w, c.id);
+            }
+            Step::AxisPair(a, b) => {
+                // As `Step::Pair`, in the frame of the pair's axis (both
+                // walls lie along it: their normals are opposite).
+                let r = AxisRay::new(ray, a.upright);
+                let wa = r.vn * L::splat(a.mn);
+                let faces_a = wa.gt(zero);
+                let (ca, cb) = (a.lanes::<L>(), b.lanes::<L>());
+                let sel = |p: L, q: L| L::select(faces_a, p, q);
+                let c = AxisLanes {
+                    id: sel(ca.id, cb.id),
+                    sn: sel(ca.sn, cb.sn),
+                    st: sel(ca.st, cb.st),
+                    d: sel(ca.d, cb.d),
+                    n: sel(ca.n, cb.n),
+                    hi: sel(ca.hi, cb.hi),
+                };
+                let w = wa.abs();
+                let vd = r.vt * c.d;
+                let (ok, dist) = approach_axis(&c, w, vd, lo, &r);
+                let take = best.beaten::<true>(ok, dist, w, c.id);
+                best.keep(take, dist, w, c.id);
+            }
+        }
+    }
+    best
+}
