@@ -13,6 +13,7 @@ use glam::DVec2;
 
 use crate::error::{GeometryError, coordinate, finite, length};
 use crate::line::{Approach, WallHit};
+use crate::positive_part::positive_part;
 
 /// A circular wall. See the [module docs](self) for the orientation rule.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -179,7 +180,7 @@ impl ArcSegment {
             let r = convex_root(self.center, self.radius, origin, velocity)?;
             (r.num >= 0.0 || r.c >= -touch).then_some(r)?
         };
-        let num = root.num.max(0.0);
+        let num = positive_part(root.num);
         if !self.full {
             let q = root.d * root.a + velocity * num;
             let lift = self.side * self.chord.perp_dot(self.center - self.start());
@@ -257,7 +258,7 @@ impl Root {
     #[inline]
     fn land(&self, center: DVec2, radius: f64, velocity: DVec2) -> WallHit {
         let inv_a = 1.0 / self.a;
-        let time = (self.num * inv_a).max(0.0);
+        let time = positive_part(self.num * inv_a);
         let (point, radial) = contact(center, self.d + velocity * time, radius);
         WallHit {
             time,
@@ -286,7 +287,7 @@ pub(crate) fn concave_root(
     // it can get disc < 0 from rounding alone (b² < a c): it touches the wall
     // at once rather than finding no wall.
     let disc = if c <= touch(radius) {
-        disc.max(0.0)
+        positive_part(disc)
     } else {
         disc
     };

@@ -47,6 +47,7 @@ pub mod error;
 pub mod hit;
 pub mod line;
 mod loop_check;
+mod positive_part;
 pub mod rectangle;
 pub mod segment;
 pub mod segment_table;

@@ -7,6 +7,7 @@
 use glam::DVec2;
 
 use crate::error::{GeometryError, MIN_LENGTH, coordinate};
+use crate::positive_part::positive_part;
 
 /// Where a ray meets a single wall, in the wall's own terms.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -146,10 +147,7 @@ impl LineSegment {
         if dist < -slack {
             return None;
         }
-        // The positive part, `+0.0` for either zero, as the lanes' `max`
-        // (`maxpd`) computes it on every instruction set (`f64::max` leaves
-        // the sign of a zero unspecified).
-        let dist = if dist > 0.0 { dist } else { 0.0 };
+        let dist = positive_part(dist);
         let along_w = rel.dot(self.dir) * w + velocity.dot(self.dir) * dist;
         if !(along_w >= -slack * w && along_w <= (self.length + slack) * w) {
             return None;
@@ -208,7 +206,7 @@ pub fn cast_line(
         // Behind the wall (on its far side), not a hair behind: never a hit.
         return None;
     }
-    let time = (dist / -vn).max(0.0);
+    let time = positive_part(dist / -vn);
     let along = (rel + velocity * time).dot(dir);
     if !(along >= -slack && along <= length + slack) {
         return None;

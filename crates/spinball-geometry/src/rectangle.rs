@@ -7,6 +7,7 @@ use crate::aabb::Aabb;
 use crate::boundary::Boundary;
 use crate::error::{GeometryError, length};
 use crate::hit::{Hit, WallId};
+use crate::positive_part::positive_part;
 use crate::shape::Shape;
 
 /// The rectangle `[-l, l] × [-h, h]` (paper §II.A: `l = h = 1` for Lyapunov
@@ -93,7 +94,7 @@ pub(crate) fn box_ahead(l: f64, h: f64, origin: DVec2, v: DVec2) -> Option<BoxAh
     } else {
         (origin.x + l, 3)
     };
-    let (dy, dx) = (dy.max(0.0), dx.max(0.0));
+    let (dy, dx) = (positive_part(dy), positive_part(dx));
     let (avy, avx) = (v.y.abs(), v.x.abs());
     let (ty, tx) = (dy * avx, dx * avy);
     let use_y = avy > 0.0 && (avx == 0.0 || ty < tx || (ty == tx && wall_y < wall_x));
@@ -128,7 +129,7 @@ pub(crate) fn land_box(
     if !time.is_finite() {
         return None;
     }
-    let time = time.max(0.0);
+    let time = positive_part(time);
     let p = origin + v * time;
     Some(box_hit(l, h, time, p, wall))
 }

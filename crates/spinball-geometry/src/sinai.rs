@@ -11,6 +11,7 @@ use crate::arc::{Root, contact, convex_root};
 use crate::boundary::Boundary;
 use crate::error::{GeometryError, MIN_SINAI_GAP, MIN_SINAI_RATIO, length, within};
 use crate::hit::Hit;
+use crate::positive_part::positive_part;
 use crate::rectangle::{box_ahead, land_box};
 use crate::shape::Shape;
 
@@ -83,7 +84,7 @@ impl Boundary for Sinai {
     fn cast(&self, origin: DVec2, v: DVec2) -> Option<Hit> {
         let ahead = box_ahead(self.l, self.l, origin, v);
         let disk = convex_root(DVec2::ZERO, self.r, origin, v).map(|r| Root {
-            num: r.num.max(0.0),
+            num: positive_part(r.num),
             ..r
         });
         let disk_wins = match (disk, ahead) {

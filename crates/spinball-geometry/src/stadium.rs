@@ -10,6 +10,7 @@ use crate::arc::{concave_root, contact};
 use crate::boundary::Boundary;
 use crate::error::{GeometryError, MAX_STADIUM_A, MIN_LENGTH, length, within};
 use crate::hit::Hit;
+use crate::positive_part::positive_part;
 use crate::shape::Shape;
 
 /// The stadium: flat walls `y = ±1` for `|x| <= a` joined by semicircular caps
@@ -72,7 +73,7 @@ impl Boundary for Stadium {
             } else {
                 (origin.y + 1.0, 0, -1.0, DVec2::Y)
             };
-            let dist = dist.max(0.0);
+            let dist = positive_part(dist);
             let avy = v.y.abs();
             let x_scaled = origin.x * avy + v.x * dist;
             if x_scaled.abs() <= (a + self.slack) * avy {
@@ -96,7 +97,7 @@ impl Boundary for Stadium {
         // One division for the cap, as for the flat wall: the flight time
         // of the larger root, clamped at 0, divided by |v|².
         let root = concave_root(center, 1.0, origin, v)?;
-        let time = root.num.max(0.0) / root.a;
+        let time = positive_part(root.num) / root.a;
         let (point, radial) = contact(center, root.d + v * time, 1.0);
         Some(Hit::on_circle(
             time, point, -radial, -1.0, wall, base, center, from, 1.0, true,
