@@ -200,8 +200,9 @@ pub(super) enum Step {
     One(Flat, bool),
     /// Two flat walls with opposite normals (lower id first).
     Pair(Flat, Flat),
-    /// A flat wall along an axis.
-    AxisOne(Axis),
+    /// A flat wall along an axis; `true` if the step before is one along
+    /// the same axis with bitwise the same normal (as for `One`).
+    AxisOne(Axis, bool),
     /// Two walls along the same axis with opposite normals (lower id first).
     AxisPair(Axis, Axis),
 }
@@ -216,25 +217,35 @@ pub(super) fn steps(table: &SegmentTable) -> Vec<Step> {
     };
     let mut steps: Vec<Step> = Vec::new();
     for v in table.flat_visits() {
-        let axis = |i: usize| Axis::new(&flat(i));
+        // A wall cast alone reuses `−(v·n)` and `v·dir` of the step before
+        // if that is a wall of the same form with bitwise the same normal.
+        let last = steps.last();
         steps.push(match *v {
-            FlatVisit::One(i) => match axis(i) {
-                Some(a) => Step::AxisOne(a),
-                None => {
-                    let f = flat(i);
-                    let bits = |w: &Flat| (w.nx.to_bits(), w.ny.to_bits());
-                    let shares =
-                        matches!(steps.last(), Some(Step::One(p, _)) if bits(p) == bits(&f));
-                    Step::One(f, shares)
+            FlatVisit::One(i) => {
+                let f = flat(i);
+                match Axis::new(&f) {
+                    Some(a) => {
+                        let shares = matches!(last, Some(Step::AxisOne(p, _))
+                            if p.upright == a.upright && p.n.to_bits() == a.n.to_bits());
+                        Step::AxisOne(a, shares)
+                    }
+                    None => {
+                        let bits = |w: &Flat| (w.nx.to_bits(), w.ny.to_bits());
+                        let shares = matches!(last, Some(Step::One(p, _)) if bits(p) == bits(&f));
+                        Step::One(f, shares)
+                    }
                 }
-            },
-            FlatVisit::Pair(i, j) => match (axis(i), axis(j)) {
-                (Some(a), Some(b)) => {
-                    debug_assert_eq!(a.upright, b.upright, "opposite normals");
-                    Step::AxisPair(a, b)
+            }
+            FlatVisit::Pair(i, j) => {
+                let (f, g) = (flat(i), flat(j));
+                match (Axis::new(&f), Axis::new(&g)) {
+                    (Some(a), Some(b)) => {
+                        debug_assert_eq!(a.upright, b.upright, "opposite normals");
+                        Step::AxisPair(a, b)
+                    }
+                    _ => Step::Pair(f, g),
                 }
-                _ => Step::Pair(flat(i), flat(j)),
-            },
+            }
         });
     }
     steps
@@ -360,11 +371,13 @@ pub(super) fn earliest<L: Lanes>(steps: &[Step], lo: f64, ray: &Ray<L>) -> Earli
                 let take = best.beaten::<true>(ok, dist, w, c.id);
                 best.keep(take, dist, w, c.id);
             }
-            Step::AxisOne(a) => {
+            Step::AxisOne(a, shares) => {
                 let r = AxisRay::new(ray, a.upright);
                 let c = a.lanes::<L>();
-                let w = r.vn * L::splat(a.mn);
-                let vd = r.vt * c.d;
+                if !shares {
+                    w = r.vn * L::splat(a.mn);
+                    vd = r.vt * c.d;
+                }
                 let (ok, dist) = approach_axis(&c, w, vd, lo, &r);
                 // Visited in the same order as `Step::One`: strictly
                 // earlier suffices.

@@ -559,7 +559,12 @@ pub(crate) mod tests {
                 Step::One(f, true) => format!("{}~", f.id),
                 Step::Pair(a, b) => format!("{}+{}", a.id, b.id),
                 // Walls along an axis: `a`, and `|` if vertical.
-                Step::AxisOne(a) => format!("a{}{}", a.id, if a.upright { "|" } else { "" }),
+                Step::AxisOne(a, shares) => format!(
+                    "a{}{}{}",
+                    a.id,
+                    if a.upright { "|" } else { "" },
+                    if *shares { "~" } else { "" }
+                ),
                 Step::AxisPair(a, b) => {
                     format!("a{}+{}{}", a.id, b.id, if a.upright { "|" } else { "" })
                 }
@@ -575,7 +580,7 @@ pub(crate) mod tests {
         // stem's floor (0) and the cap's floor (2, 4) face the same way.
         assert_eq!(
             ids(&mushroom(1.0, 0.3, 1.0)),
-            ["a0", "a2", "a4", "a1+5|", "arc3"]
+            ["a0", "a2~", "a4~", "a1+5|", "arc3"]
         );
         // A square standing on a corner: two oblique pairs.
         let diamond =
