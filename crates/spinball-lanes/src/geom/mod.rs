@@ -13,7 +13,8 @@
 //!
 //! One file per table ([`circle`], [`rectangle`], [`stadium`], [`sinai`],
 //! [`segments`], whose flat walls are cast in [`flat_walls`]), the circle
-//! arithmetic they share in [`round`], and the test harness that holds each of them to its scalar cast in `agree`.
+//! arithmetic they share in [`round`], and the test harness that holds
+//! each of them to its scalar cast in `agree`.
 //!
 //! [`Boundary::cast`]: spinball_geometry::Boundary::cast
 
