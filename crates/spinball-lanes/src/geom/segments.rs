@@ -360,8 +360,13 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
     /// the search per kernel, not two).
     #[inline(always)]
     fn curved<L: Lanes>(&self, ray: &Ray<L>) -> LaneHit<L> {
-        let flat = earliest(self.steps, self.lo, ray);
+        // The arcs first: their square roots are the longest latencies of
+        // the search, and the flat walls (independent of them) then fill the
+        // wait in program order, within the processor's scheduling window.
+        // The order of evaluation changes no result (the two searches share
+        // nothing until they are compared below).
         let round = self.arcs(ray);
+        let flat = earliest(self.steps, self.lo, ray);
         // The earliest arc against the earliest flat wall, cross-multiplied:
         // `t|v|²·speed < dist·|v|²` (any arc if there is no flat wall, a NaN
         // `dist`), ties to the lower id.
