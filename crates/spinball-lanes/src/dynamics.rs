@@ -116,6 +116,17 @@ pub(crate) fn step<G: Geom, L: Lanes>(
     shell: Shell<L>,
 ) -> Stepped<L> {
     let hit = g.cast(b.x, b.y, b.vx, b.vy);
+    collide(law, b, hit, shell)
+}
+
+/// The collision half of [`step`], at the hit `hit` already cast.
+#[inline(always)]
+pub(crate) fn collide<L: Lanes>(
+    law: &Law,
+    b: &mut Balls<L>,
+    hit: LaneHit<L>,
+    shell: Shell<L>,
+) -> Stepped<L> {
     let (vx, vy, u) = (b.vx, b.vy, b.u);
     // SpinLaw::collide with t = (n_y, -n_x): k = (v·t − αu) δ.
     let tx = hit.ny;

@@ -17,7 +17,7 @@
 use spinball_core::{State, TangentVector};
 
 use crate::dynamics::{
-    Balls, Law, LogProduct, Shell, TangentStep, ZeroRun, pow2_renormalise, step,
+    Balls, Law, LogProduct, Shell, TangentStep, ZeroRun, collide, pow2_renormalise, step,
 };
 use crate::geom::Geom;
 use crate::isa::ProvenBy;
@@ -201,10 +201,15 @@ impl Kernel for FiniteDifference {
         let mut time = L::splat(0.0);
         let mut zero_run = ZeroRun::<L>::new();
         for _ in 0..self.collisions {
-            let t = step(g, law, &mut r, shell).hit.time;
+            // Both searches before either landing: the shadow's search (the
+            // bulk of the work, independent of the reference) then fills the
+            // wait on the reference's division in program order.
+            let found_r = g.search(r.x, r.y, r.vx, r.vy);
+            let found_s = g.search(s.x, s.y, s.vx, s.vy);
+            let t = collide(law, &mut r, g.land(found_r), shell).hit.time;
             zero_run.watch(t);
             time = time + t;
-            step(g, law, &mut s, Shell::Own);
+            collide(law, &mut s, g.land(found_s), Shell::Own);
             let zr = r.coords();
             let zs = s.coords();
             let d: [L; 5] = five(|c| zs[c] - zr[c]);

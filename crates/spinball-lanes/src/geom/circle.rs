@@ -3,7 +3,7 @@
 //! The integrable reference case; its cast is the shared concave-circle
 //! arithmetic of [`round`](super::round) with nothing to choose between.
 
-use super::round::{Ray, Round, concave};
+use super::round::{Ray, Root, Round, concave_root, contact_at};
 use super::{Geom, LaneHit};
 use crate::lanes::Lanes;
 
@@ -23,20 +23,42 @@ impl LaneCircle {
     }
 }
 
+/// What the circle's search leaves for the landing: the ray, the root and
+/// the flight time.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct CircleFound<L: Lanes> {
+    ray: Ray<L>,
+    root: Root<L>,
+    time: L,
+}
+
 impl Geom for LaneCircle {
     const CURVED: bool = true;
+    type Found<L: Lanes> = CircleFound<L>;
+
     #[inline(always)]
-    fn cast<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> LaneHit<L> {
+    fn search<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> CircleFound<L> {
         let zero = L::splat(0.0);
-        let all = zero.eq(zero);
         let ray = Ray::new(x, y, vx, vy);
-        let c = concave::<L, false, true>(zero, zero, &self.round, &ray, all);
+        let root = concave_root::<L, true>(zero, zero, &self.round, &ray);
+        CircleFound {
+            ray,
+            root,
+            time: (root.num * ray.inv_a).max(zero),
+        }
+    }
+
+    #[inline(always)]
+    fn land<L: Lanes>(&self, f: CircleFound<L>) -> LaneHit<L> {
+        let zero = L::splat(0.0);
+        let (px, py, radx, rady) =
+            contact_at::<L, false>(zero, zero, &f.root, &f.ray, f.time, &self.round, f.root.ok);
         LaneHit {
-            time: L::select(c.ok, c.time, L::splat(f64::NAN)),
-            px: c.px,
-            py: c.py,
-            nx: c.nx,
-            ny: c.ny,
+            time: L::select(f.root.ok, f.time, L::splat(f64::NAN)),
+            px,
+            py,
+            nx: -radx,
+            ny: -rady,
             curvature: L::splat(self.k),
             wall: zero,
         }

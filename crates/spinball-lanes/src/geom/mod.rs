@@ -11,6 +11,15 @@
 //! time becomes NaN, which then sticks to that lane's state and is reported
 //! as an error at the end of the run.
 //!
+//! A cast comes in two halves, [`Geom::search`] (which wall, and when: the
+//! cast's square roots and its one division) and [`Geom::land`] (where on
+//! it, and its normal). A kernel that steps two independent trajectories
+//! per lane (finite differences: the reference and its shadow) searches for
+//! both before landing either, so that in program order the second search
+//! fills the wait on the first one's division: the processor overlaps only
+//! what lies within its scheduling window, and a cast's latencies, not its
+//! operation count, bound the step on current x86 cores.
+//!
 //! One file per table ([`circle`], [`rectangle`], [`stadium`], [`sinai`],
 //! [`segments`], whose flat walls are cast in [`flat_walls`]), the circle
 //! arithmetic they share in [`round`], and the test harness that holds
@@ -63,6 +72,16 @@ pub(crate) trait Geom: Copy + Send + Sync {
     /// Whether the table has curved walls (the tangent map then needs its
     /// curvature term; flat-only tables skip it).
     const CURVED: bool;
+    /// What [`search`](Self::search) leaves for [`land`](Self::land).
+    type Found<L: Lanes>: Copy;
+    /// The first half of the cast: which wall each lane meets and when
+    /// (the cast's division included).
+    fn search<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> Self::Found<L>;
+    /// The second half: the contact on the wall found and its normal.
+    fn land<L: Lanes>(&self, found: Self::Found<L>) -> LaneHit<L>;
     /// The next wall hit from `(x, y)` along `(vx, vy)`, lane by lane.
-    fn cast<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> LaneHit<L>;
+    #[inline(always)]
+    fn cast<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> LaneHit<L> {
+        self.land(self.search(x, y, vx, vy))
+    }
 }

@@ -7,15 +7,6 @@
 use super::{Geom, LaneHit};
 use crate::lanes::{Lanes, MaskOps};
 
-/// `cast_box` of `spinball-geometry` (walls 0 bottom, 1 right, 2 top,
-/// 3 left; ties to the lower id): the two candidate times compared by cross
-/// multiplication, one division.
-#[inline(always)]
-pub(super) fn cast_box<L: Lanes>(l: f64, h: f64, x: L, y: L, vx: L, vy: L) -> LaneHit<L> {
-    let b = BoxAhead::new(l, h, x, y, vx, vy);
-    b.land(l, h, x, y, vx, vy, b.dist / b.speed)
-}
-
 /// `box_ahead` of `spinball-geometry` per lane: the wall ahead and its
 /// flight time as the undivided fraction `dist / speed`.
 #[derive(Clone, Copy, Debug)]
@@ -99,11 +90,33 @@ impl LaneRectangle {
     }
 }
 
+/// What the rectangle's search leaves for the landing: the ball, the wall
+/// ahead and the flight time.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct BoxFound<L: Lanes> {
+    ball: [L; 4],
+    walls: BoxAhead<L>,
+    time: L,
+}
+
 impl Geom for LaneRectangle {
     const CURVED: bool = false;
+    type Found<L: Lanes> = BoxFound<L>;
+
     #[inline(always)]
-    fn cast<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> LaneHit<L> {
-        cast_box(self.l, self.h, x, y, vx, vy)
+    fn search<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> BoxFound<L> {
+        let walls = BoxAhead::new(self.l, self.h, x, y, vx, vy);
+        BoxFound {
+            ball: [x, y, vx, vy],
+            walls,
+            time: walls.dist / walls.speed,
+        }
+    }
+
+    #[inline(always)]
+    fn land<L: Lanes>(&self, f: BoxFound<L>) -> LaneHit<L> {
+        let [x, y, vx, vy] = f.ball;
+        f.walls.land(self.l, self.h, x, y, vx, vy, f.time)
     }
 }
 

@@ -68,21 +68,6 @@ impl<L: Lanes> Ray<L> {
     }
 }
 
-/// Where a ball meets a circle: the scalar cast's answer before it is
-/// turned into an `Option` (`ok`) and before the arc's coverage test.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Contact<L: Lanes> {
-    /// Lanes where the scalar circle cast returns `Some`.
-    pub ok: L::Mask,
-    /// Flight time (meaningful where `ok`).
-    pub time: L,
-    pub px: L,
-    pub py: L,
-    /// Unit normal pointing into the table.
-    pub nx: L,
-    pub ny: L,
-}
-
 /// Constants of a circle of radius `r` as the scalar casts use them.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) struct Round {
@@ -236,27 +221,4 @@ pub(super) fn contact_at<L: Lanes, const UNIT: bool>(
         L::splat(k.inv_r),
         care,
     )
-}
-
-/// `cast_concave_circle`: the ball inside the circle, where it leaves.
-#[inline(always)]
-pub(super) fn concave<L: Lanes, const UNIT: bool, const ON_AXIS: bool>(
-    cx: L,
-    cy: L,
-    k: &Round,
-    ray: &Ray<L>,
-    care: L::Mask,
-) -> Contact<L> {
-    let root = concave_root::<L, ON_AXIS>(cx, cy, k, ray);
-    let time = (root.num * ray.inv_a).max(L::splat(0.0));
-    let (px, py, radx, rady) =
-        contact_at::<L, UNIT>(cx, cy, &root, ray, time, k, care.and(root.ok));
-    Contact {
-        ok: root.ok,
-        time,
-        px,
-        py,
-        nx: -radx,
-        ny: -rady,
-    }
 }

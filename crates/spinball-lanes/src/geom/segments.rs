@@ -354,19 +354,17 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
 }
 
 impl<const CURVED: bool> Segments<'_, CURVED> {
-    /// The cast of a table with arcs. The search is the same whatever the
-    /// radii; only the landing differs for a table whose arcs all have
-    /// radius 1, so the branch on that comes after the search (one copy of
-    /// the search per kernel, not two).
+    /// The search of a table with arcs: the earliest arc against the
+    /// earliest flat wall, and the winner's flight time.
     #[inline(always)]
-    fn curved<L: Lanes>(&self, ray: &Ray<L>) -> LaneHit<L> {
+    fn curved<L: Lanes>(&self, ray: Ray<L>) -> Found<L> {
         // The arcs first: their square roots are the longest latencies of
         // the search, and the flat walls (independent of them) then fill the
         // wait in program order, within the processor's scheduling window.
         // The order of evaluation changes no result (the two searches share
         // nothing until they are compared below).
-        let round = self.arcs(ray);
-        let flat = earliest(self.steps, self.lo, ray);
+        let round = self.arcs(&ray);
+        let flat = earliest(self.steps, self.lo, &ray);
         // The earliest arc against the earliest flat wall, cross-multiplied:
         // `t|v|²·speed < dist·|v|²` (any arc if there is no flat wall, a NaN
         // `dist`), ties to the lower id.
@@ -379,30 +377,59 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
         // The one division: the winner's fraction.
         let time =
             L::select(arc_wins, round.num, flat.dist) / L::select(arc_wins, ray.a, flat.speed);
-        // Both landings fetch their constants by the winner's id (each kind's
-        // palettes hold zeros at the other kind's ids; those lanes are
-        // discarded).
-        let wall = L::select(arc_wins, round.id, flat.id);
-        if self.unit {
-            land::<L, true>(self.landing, ray, time, wall, arc_wins)
-        } else {
-            land::<L, false>(self.landing, ray, time, wall, arc_wins)
+        Found {
+            ray,
+            time,
+            wall: L::select(arc_wins, round.id, flat.id),
+            arc_wins,
         }
     }
 }
 
+/// What a segment table's search leaves for the landing: the ray, the
+/// flight time, the wall and the lanes whose wall is an arc.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Found<L: Lanes> {
+    ray: Ray<L>,
+    time: L,
+    wall: L,
+    arc_wins: L::Mask,
+}
+
 impl<const CURVED: bool> Geom for Segments<'_, CURVED> {
     const CURVED: bool = CURVED;
+    type Found<L: Lanes> = Found<L>;
 
     #[inline(always)]
-    fn cast<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> LaneHit<L> {
+    fn search<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> Found<L> {
         if !CURVED {
             let ray = Ray::flat(x, y, vx, vy);
             let flat = earliest(self.steps, self.lo, &ray);
-            return land_flat(self.landing, &ray, flat.dist / flat.speed, flat.id);
+            let none = flat.id.ne(flat.id);
+            return Found {
+                ray,
+                time: flat.dist / flat.speed,
+                wall: flat.id,
+                arc_wins: none,
+            };
         }
         // `|v|²` serves every arc.
-        self.curved(&Ray::new_undivided(x, y, vx, vy))
+        self.curved(Ray::new_undivided(x, y, vx, vy))
+    }
+
+    #[inline(always)]
+    fn land<L: Lanes>(&self, f: Found<L>) -> LaneHit<L> {
+        if !CURVED {
+            return land_flat(self.landing, &f.ray, f.time, f.wall);
+        }
+        // Both landings fetch their constants by the winner's id (each kind's
+        // palettes hold zeros at the other kind's ids; those lanes are
+        // discarded).
+        if self.unit {
+            land::<L, true>(self.landing, &f.ray, f.time, f.wall, f.arc_wins)
+        } else {
+            land::<L, false>(self.landing, &f.ray, f.time, f.wall, f.arc_wins)
+        }
     }
 }
 

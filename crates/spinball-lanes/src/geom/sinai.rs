@@ -7,7 +7,7 @@
 //! winner's fraction divided once, as in the scalar cast.
 
 use super::rectangle::BoxAhead;
-use super::round::{Ray, Round, contact_at, convex_root};
+use super::round::{Ray, Root, Round, contact_at, convex_root};
 use super::{Geom, LaneHit};
 use crate::lanes::{Lanes, MaskOps};
 
@@ -30,25 +30,53 @@ impl LaneSinai {
     }
 }
 
+/// What the Sinai table's search leaves for the landing.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SinaiFound<L: Lanes> {
+    ray: Ray<L>,
+    walls: BoxAhead<L>,
+    root: Root<L>,
+    disk_wins: L::Mask,
+    time: L,
+}
+
 impl Geom for LaneSinai {
     const CURVED: bool = true;
+    type Found<L: Lanes> = SinaiFound<L>;
+
     #[inline(always)]
-    fn cast<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> LaneHit<L> {
+    fn search<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> SinaiFound<L> {
         let zero = L::splat(0.0);
-        let b = BoxAhead::new(self.l, self.l, x, y, vx, vy);
+        let walls = BoxAhead::new(self.l, self.l, x, y, vx, vy);
         let ray = Ray::new_undivided(x, y, vx, vy);
         let root = convex_root(zero, zero, &self.disk, &ray);
         let num = root.num.max(zero);
         // The disk if strictly earlier (`num·speed < dist·|v|²`) or if the
         // ball meets no box wall; ties go to the box (lower ids).
-        let disk_wins = root
-            .ok
-            .and(b.ok.not().or((num * b.speed).lt(b.dist * ray.a)));
+        let disk_wins = root.ok.and(
+            walls
+                .ok
+                .not()
+                .or((num * walls.speed).lt(walls.dist * ray.a)),
+        );
         // One division, of the winner's fraction.
-        let time = L::select(disk_wins, num, b.dist) / L::select(disk_wins, ray.a, b.speed);
-        let wall = b.land(self.l, self.l, x, y, vx, vy, time);
+        let time = L::select(disk_wins, num, walls.dist) / L::select(disk_wins, ray.a, walls.speed);
+        SinaiFound {
+            ray,
+            walls,
+            root,
+            disk_wins,
+            time,
+        }
+    }
+
+    #[inline(always)]
+    fn land<L: Lanes>(&self, f: SinaiFound<L>) -> LaneHit<L> {
+        let zero = L::splat(0.0);
+        let (r, time, disk_wins) = (&f.ray, f.time, f.disk_wins);
+        let wall = f.walls.land(self.l, self.l, r.x, r.y, r.vx, r.vy, time);
         let (px, py, nx, ny) =
-            contact_at::<L, false>(zero, zero, &root, &ray, time, &self.disk, disk_wins);
+            contact_at::<L, false>(zero, zero, &f.root, r, time, &self.disk, disk_wins);
         LaneHit {
             time: L::select(disk_wins, time, wall.time),
             px: L::select(disk_wins, px, wall.px),

@@ -7,7 +7,7 @@
 //! wall's flight time and the cap's are then one division of the chosen
 //! fraction (`dist / |v_y|` or `num / |v|²`), as in the scalar cast.
 
-use super::round::{Contact, Ray, Round, concave_root, contact_at};
+use super::round::{Ray, Root, Round, concave_root, contact_at};
 use super::{Geom, LaneHit};
 use crate::lanes::{Lanes, MaskOps};
 
@@ -35,10 +35,32 @@ impl LaneStadium {
     }
 }
 
+/// What the stadium's search leaves for the landing: what the landing
+/// needs of the choice between flat wall and cap, folded into as few masks
+/// as it can be (a kernel holds this across another search).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct StadiumFound<L: Lanes> {
+    ray: Ray<L>,
+    root: Root<L>,
+    /// The flight time, and the hit's (NaN where the scalar has none).
+    time: L,
+    hit_time: L,
+    /// The flat wall (else the cap); the cap, where the cast finds it.
+    flat: L::Mask,
+    cap: L::Mask,
+    /// `+1` for the top wall, `-1` for the bottom.
+    side_y: L,
+    /// The cap's centre.
+    cx: L,
+    wall: L,
+}
+
 impl Geom for LaneStadium {
     const CURVED: bool = true;
+    type Found<L: Lanes> = StadiumFound<L>;
+
     #[inline(always)]
-    fn cast<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> LaneHit<L> {
+    fn search<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> StadiumFound<L> {
         let zero = L::splat(0.0);
         let one = L::splat(1.0);
         let a = self.a;
@@ -58,31 +80,39 @@ impl Geom for LaneStadium {
         let root = concave_root::<L, true>(cx, zero, &self.cap, &ray);
         // One division: the flat wall's fraction or the cap's.
         let time = L::select(flat, dist, root.num.max(zero)) / L::select(flat, avy, ray.a);
-        let flat_x = (x + vx * time).clamp(-a, a);
-        let cap_care = flat.not().and(root.ok);
-        let (cap_px, cap_py, radx, rady) =
-            contact_at::<L, true>(cx, zero, &root, &ray, time, &self.cap, cap_care);
-        let cap = Contact {
-            ok: root.ok,
+        StadiumFound {
+            ray,
+            root,
             time,
-            px: cap_px,
-            py: cap_py,
-            nx: -radx,
-            ny: -rady,
-        };
-        let cap_time = L::select(cap.ok, cap.time, L::splat(f64::NAN));
-        LaneHit {
-            time: L::select(flat, time, cap_time),
-            px: L::select(flat, flat_x, cap.px),
-            py: L::select(flat, L::select(up, one, -one), cap.py),
-            nx: L::select(flat, zero, cap.nx),
-            ny: L::select(flat, L::select(up, -one, one), cap.ny),
-            curvature: L::select(flat, zero, -one),
+            hit_time: L::select(flat.or(root.ok), time, L::splat(f64::NAN)),
+            flat,
+            cap: flat.not().and(root.ok),
+            side_y: L::select(up, one, -one),
+            cx,
             wall: L::select(
                 flat,
                 L::select(up, L::splat(2.0), zero),
                 L::select(right, one, L::splat(3.0)),
             ),
+        }
+    }
+
+    #[inline(always)]
+    fn land<L: Lanes>(&self, f: StadiumFound<L>) -> LaneHit<L> {
+        let zero = L::splat(0.0);
+        let flat = f.flat;
+        let flat_x = (f.ray.x + f.ray.vx * f.time).clamp(-self.a, self.a);
+        let (cap_px, cap_py, radx, rady) =
+            contact_at::<L, true>(f.cx, zero, &f.root, &f.ray, f.time, &self.cap, f.cap);
+        LaneHit {
+            time: f.hit_time,
+            px: L::select(flat, flat_x, cap_px),
+            py: L::select(flat, f.side_y, cap_py),
+            nx: L::select(flat, zero, -radx),
+            // The inward normal of the wall at y = ±1 is ∓1 (negation is exact).
+            ny: L::select(flat, -f.side_y, -rady),
+            curvature: L::select(flat, zero, L::splat(-1.0)),
+            wall: f.wall,
         }
     }
 }

@@ -45,7 +45,7 @@ use crate::isa::{Baseline, ProvenBy};
 pub(crate) const MAX_LANES: usize = 64;
 
 /// Lane-wise boolean operations of a comparison result.
-pub(crate) trait MaskOps: Copy {
+pub(crate) trait MaskOps: Copy + std::fmt::Debug {
     /// Both.
     fn and(self, o: Self) -> Self;
     /// Either.
