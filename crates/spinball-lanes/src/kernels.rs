@@ -33,7 +33,9 @@ pub(crate) trait Kernel: Sync {
     /// The lane type at each instruction-set level (the results do not
     /// depend on it; it only sets how many trajectories share the registers).
     type Groups: PerIsa;
-    /// Run `L::N` initial conditions (`ins.len() == L::N`), pushing their
+    /// Independent streams of `L::N` trajectories a chunk steps in turn.
+    const STREAMS: usize = 1;
+    /// Run `STREAMS · L::N` initial conditions, pushing their
     /// outcomes onto `out`.
     fn chunk<G: Geom, L: Lanes>(
         &self,
@@ -60,17 +62,16 @@ pub(crate) fn run_chunks<G: Geom, K: Kernel, L: Lanes<Needs: ProvenBy<C>>, C>(
     ins: &[K::In],
 ) -> Vec<K::Out> {
     const { assert!(L::N <= MAX_LANES) };
-    let mut out = Vec::with_capacity(ins.len() + L::N);
-    for c in ins.chunks(L::N) {
-        if c.len() == L::N {
+    let n = L::N * K::STREAMS;
+    let mut out = Vec::with_capacity(ins.len() + n);
+    for c in ins.chunks(n) {
+        if c.len() == n {
             k.chunk::<G, L>(g, law, c, &mut out);
         } else {
             let last = c[c.len() - 1];
-            let padded: Vec<K::In> = (0..L::N)
-                .map(|j| c.get(j).copied().unwrap_or(last))
-                .collect();
+            let padded: Vec<K::In> = (0..n).map(|j| c.get(j).copied().unwrap_or(last)).collect();
             k.chunk::<G, L>(g, law, &padded, &mut out);
-            out.truncate(out.len() - (L::N - c.len()));
+            out.truncate(out.len() - (n - c.len()));
         }
     }
     out
@@ -132,28 +133,45 @@ pub(crate) struct Plain {
 impl Kernel for Plain {
     type In = State;
     type Out = Flight;
-    /// Registers per group: AVX-512 4, AVX2 4, SSE2 4, portable `f64` 4.
-    type Groups = Groups<4, 4, 4, 4>;
+    /// Registers per group and stream: AVX-512 3, AVX2 2, SSE2 2, portable
+    /// `f64` 2, in two streams.
+    type Groups = Groups<3, 2, 2, 2>;
+    const STREAMS: usize = 2;
 
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(&self, g: &G, law: &Law, ins: &[State], out: &mut Vec<Flight>) {
-        let mut b = Balls::<L>::new(load_states(|i| ins[i]));
-        let shell = Shell::Fixed(b.inv_shell(law));
-        let mut time = L::splat(0.0);
-        let mut zero_run = ZeroRun::<L>::new();
+        let mut a = Balls::<L>::new(load_states(|i| ins[i]));
+        let mut b = Balls::<L>::new(load_states(|i| ins[L::N + i]));
+        let (shell_a, shell_b) = (
+            Shell::Fixed(a.inv_shell(law)),
+            Shell::Fixed(b.inv_shell(law)),
+        );
+        let (mut time_a, mut time_b) = (L::splat(0.0), L::splat(0.0));
+        let (mut run_a, mut run_b) = (ZeroRun::<L>::new(), ZeroRun::<L>::new());
+        // Stream `b` runs half a step behind `a`: each stream's search is
+        // followed in program order by the other's landing and collision, which
+        // cover its division. The last search of `b` is not landed.
+        let mut found_b = g.search(b.x, b.y, b.vx, b.vy);
         for _ in 0..self.collisions {
-            let t = step(g, law, &mut b, shell).hit.time;
-            zero_run.watch(t);
-            time = time + t;
+            let found_a = g.search(a.x, a.y, a.vx, a.vy);
+            let t = collide(law, &mut b, g.land(found_b), shell_b).hit.time;
+            run_b.watch(t);
+            time_b = time_b + t;
+            found_b = g.search(b.x, b.y, b.vx, b.vy);
+            let t = collide(law, &mut a, g.land(found_a), shell_a).hit.time;
+            run_a.watch(t);
+            time_a = time_a + t;
         }
-        // A stuck lane reports a NaN time (rerun it on the scalar path).
-        let time = L::select(zero_run.moving(), time, L::splat(f64::NAN));
-        let z = b.coords();
-        out.extend((0..L::N).map(|i| Flight {
-            end: state_of(&z, i),
-            time: time.lane(i),
-            collisions: self.collisions,
-        }));
+        for (b, time, run) in [(a, time_a, run_a), (b, time_b, run_b)] {
+            // A stuck lane reports a NaN time (rerun it on the scalar path).
+            let time = L::select(run.moving(), time, L::splat(f64::NAN));
+            let z = b.coords();
+            out.extend((0..L::N).map(|i| Flight {
+                end: state_of(&z, i),
+                time: time.lane(i),
+                collisions: self.collisions,
+            }));
+        }
     }
 
     fn is_sound(o: &Flight) -> bool {
@@ -538,8 +556,10 @@ mod tests {
             "mask",
             "bits",
         ];
-        let report = |kernel: &str| {
-            let c = take();
+        // Per trajectory: a kernel of several streams runs that many copies
+        // of the one state in a chunk.
+        let report = |kernel: &str, streams: usize| {
+            let c = take().map(|k| k / streams as u64);
             let per: Vec<String> = names
                 .iter()
                 .zip(c)
@@ -553,7 +573,7 @@ mod tests {
         };
         take();
         run_chunks::<_, _, Counted, _>(Baseline, g, l, &Plain { collisions: N }, &[s]);
-        let plain = report("plain");
+        let plain = report("plain", Plain::STREAMS);
         let fd = FiniteDifference {
             collisions: N,
             delta0: 1e-7,
@@ -561,9 +581,9 @@ mod tests {
             inv_units: [1.0; 5],
         };
         run_chunks::<_, _, Counted, _>(Baseline, g, l, &fd, &[(s, d)]);
-        let fd = report("fd");
+        let fd = report("fd", 1);
         run_chunks::<_, _, Counted, _>(Baseline, g, l, &Tangent { collisions: N }, &[(s, d)]);
-        let tangent = report("tangent");
+        let tangent = report("tangent", 1);
         let spectrum = Spectrum {
             collisions: N,
             qr_interval: 1,
@@ -575,7 +595,7 @@ mod tests {
             &spectrum,
             &[(s, std::array::from_fn(unit))],
         );
-        let spectrum = report("spectrum");
+        let spectrum = report("spectrum", 1);
         [plain, fd, tangent, spectrum]
     }
 }
