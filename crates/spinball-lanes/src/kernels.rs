@@ -33,10 +33,12 @@ pub(crate) trait Kernel: Sync {
     /// The lane type at each instruction-set level (the results do not
     /// depend on it; it only sets how many trajectories share the registers).
     type Groups: PerIsa;
-    /// Independent streams of `L::N` trajectories a chunk steps in turn.
+    /// Independent streams of `L::N` trajectories a chunk steps in turn
+    /// (each stream's landing then covers the other's division: see
+    /// docs/PERFORMANCE.md, "Latency, not operations").
     const STREAMS: usize = 1;
-    /// Run `STREAMS · L::N` initial conditions, pushing their
-    /// outcomes onto `out`.
+    /// Run `STREAMS · L::N` initial conditions (`ins.len()`), pushing their
+    /// outcomes onto `out` in input order.
     fn chunk<G: Geom, L: Lanes>(
         &self,
         g: &G,
@@ -48,7 +50,8 @@ pub(crate) trait Kernel: Sync {
     fn is_sound(out: &Self::Out) -> bool;
 }
 
-/// Run `k` over `ins` in chunks of `L::N` lanes, results in input order.
+/// Run `k` over `ins` in chunks of `K::STREAMS · L::N` lanes, results in
+/// input order.
 ///
 /// The only way the crate runs a kernel. `_cpu` proves that this CPU has the
 /// features `L`'s instructions need (`L::Needs: ProvenBy<C>`, checked by the
