@@ -89,6 +89,12 @@ impl<L: Lanes> Balls<L> {
         L::splat(1.0) / law.norm2(self.vx, self.vy, self.u)
     }
 
+    /// The first half of the cast from the current state ([`Geom::search`]).
+    #[inline(always)]
+    pub fn search<G: Geom>(&self, g: &G) -> G::Found<L> {
+        g.search(self.x, self.y, self.vx, self.vy)
+    }
+
     /// The state as `(x, y, vx, vy, u)`.
     #[inline(always)]
     pub fn coords(&self) -> [L; 5] {

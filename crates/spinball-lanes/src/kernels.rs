@@ -143,42 +143,70 @@ impl Kernel for Plain {
 
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(&self, g: &G, law: &Law, ins: &[State], out: &mut Vec<Flight>) {
-        let mut a = Balls::<L>::new(load_states(|i| ins[i]));
-        let mut b = Balls::<L>::new(load_states(|i| ins[L::N + i]));
-        let (shell_a, shell_b) = (
-            Shell::Fixed(a.inv_shell(law)),
-            Shell::Fixed(b.inv_shell(law)),
-        );
-        let (mut time_a, mut time_b) = (L::splat(0.0), L::splat(0.0));
-        let (mut run_a, mut run_b) = (ZeroRun::<L>::new(), ZeroRun::<L>::new());
+        let mut a = PlainStream::<L>::new(law, |i| ins[i]);
+        let mut b = PlainStream::<L>::new(law, |i| ins[L::N + i]);
         // Stream `b` runs half a step behind `a`: each stream's search is
-        // followed in program order by the other's landing and collision, which
-        // cover its division. The last search of `b` is not landed.
-        let mut found_b = g.search(b.x, b.y, b.vx, b.vy);
+        // followed in program order by the other's landing and collision,
+        // which cover its division. The last search of `b` is not landed.
+        let mut found_b = b.balls.search(g);
         for _ in 0..self.collisions {
-            let found_a = g.search(a.x, a.y, a.vx, a.vy);
-            let t = collide(law, &mut b, g.land(found_b), shell_b).hit.time;
-            run_b.watch(t);
-            time_b = time_b + t;
-            found_b = g.search(b.x, b.y, b.vx, b.vy);
-            let t = collide(law, &mut a, g.land(found_a), shell_a).hit.time;
-            run_a.watch(t);
-            time_a = time_a + t;
+            let found_a = a.balls.search(g);
+            b.land(g, law, found_b);
+            found_b = b.balls.search(g);
+            a.land(g, law, found_a);
         }
-        for (b, time, run) in [(a, time_a, run_a), (b, time_b, run_b)] {
-            // A stuck lane reports a NaN time (rerun it on the scalar path).
-            let time = L::select(run.moving(), time, L::splat(f64::NAN));
-            let z = b.coords();
-            out.extend((0..L::N).map(|i| Flight {
-                end: state_of(&z, i),
-                time: time.lane(i),
-                collisions: self.collisions,
-            }));
-        }
+        out.extend(a.flights(self.collisions));
+        out.extend(b.flights(self.collisions));
     }
 
     fn is_sound(o: &Flight) -> bool {
         o.time.is_finite() && o.end.to_array().iter().all(|x| x.is_finite())
+    }
+}
+
+/// One stream of the plain kernel: `L::N` balls, their energy shell, their
+/// summed flight time and their runs of zero-time collisions.
+#[derive(Clone, Copy)]
+struct PlainStream<L: Lanes> {
+    balls: Balls<L>,
+    shell: Shell<L>,
+    time: L,
+    zero_run: ZeroRun<L>,
+}
+
+impl<L: Lanes> PlainStream<L> {
+    #[inline(always)]
+    fn new(law: &Law, s: impl Fn(usize) -> State) -> Self {
+        let balls = Balls::new(load_states(s));
+        PlainStream {
+            shell: Shell::Fixed(balls.inv_shell(law)),
+            balls,
+            time: L::splat(0.0),
+            zero_run: ZeroRun::new(),
+        }
+    }
+
+    /// The second half of the step: land where `found` says, collide, and
+    /// count the flight.
+    #[inline(always)]
+    fn land<G: Geom>(&mut self, g: &G, law: &Law, found: G::Found<L>) {
+        let t = collide(law, &mut self.balls, g.land(found), self.shell)
+            .hit
+            .time;
+        self.zero_run.watch(t);
+        self.time = self.time + t;
+    }
+
+    /// The outcomes, lane by lane. A stuck lane reports a NaN time (rerun it
+    /// on the scalar path).
+    fn flights(&self, collisions: u64) -> impl Iterator<Item = Flight> {
+        let time = L::select(self.zero_run.moving(), self.time, L::splat(f64::NAN));
+        let z = self.balls.coords();
+        (0..L::N).map(move |i| Flight {
+            end: state_of(&z, i),
+            time: time.lane(i),
+            collisions,
+        })
     }
 }
 
@@ -225,8 +253,8 @@ impl Kernel for FiniteDifference {
             // Both searches before either landing: the shadow's search (the
             // bulk of the work, independent of the reference) then fills the
             // wait on the reference's division in program order.
-            let found_r = g.search(r.x, r.y, r.vx, r.vy);
-            let found_s = g.search(s.x, s.y, s.vx, s.vy);
+            let found_r = r.search(g);
+            let found_s = s.search(g);
             let t = collide(law, &mut r, g.land(found_r), shell).hit.time;
             zero_run.watch(t);
             time = time + t;
