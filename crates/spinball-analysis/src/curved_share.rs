@@ -81,7 +81,7 @@ pub fn curved_share<B: Boundary + Sync>(
     let clock = Instant::now();
     let billiard = Billiard::new(table, law);
     let parts = map_indices(ics, threads, |i| {
-        let start = sampler.initial_state(billiard.table(), billiard.law(), seed, i);
+        let start = sampler.try_initial_state(billiard.table(), billiard.law(), seed, i)?;
         wall_statistics(&billiard, start, collisions).map_err(|e| e.at_index(i))
     })?;
     let mut pooled = WallStatistics::new(&law);

@@ -1,6 +1,6 @@
 //! Why an analysis could not run.
 
-use spinball_core::{LaunchError, PerturbationError, SpinLawError, StepError};
+use spinball_core::{LaunchError, NoRoom, PerturbationError, SpinLawError, StepError};
 use spinball_geometry::GeometryError;
 use spinball_lanes::LanesError;
 use thiserror::Error;
@@ -77,6 +77,9 @@ pub enum AnalysisError {
     /// Invalid spin parameter.
     #[error(transparent)]
     SpinLaw(#[from] SpinLawError),
+    /// The sampler cannot draw initial conditions in this table.
+    #[error(transparent)]
+    NoRoom(#[from] NoRoom),
 }
 
 impl AnalysisError {

@@ -76,7 +76,7 @@ pub fn trajectory_profile<B: Boundary>(
     if collisions == 0 {
         return Err(AnalysisError::invalid("collisions", "must be > 0"));
     }
-    let start = sampler.sample(billiard.table(), billiard.law(), &mut ic_rng(seed, index));
+    let start = sampler.try_sample(billiard.table(), billiard.law(), &mut ic_rng(seed, index))?;
     let tag = |e: AnalysisError| e.at_index(index);
     let mut ball = billiard.launch(start).map_err(|e| tag(e.into()))?;
     let first = billiard.step(&mut ball).map_err(|e| tag(e.into()))?;

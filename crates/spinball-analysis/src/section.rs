@@ -176,9 +176,9 @@ pub fn sampled_sections<B: Boundary + Sync>(
     threads: Threads,
 ) -> Result<Vec<Vec<SectionPoint>>, AnalysisError> {
     let (table, law) = (billiard.table(), billiard.law());
-    let starts: Vec<State> = (0..orbits)
-        .map(|i| sampler.initial_state(table, law, seed, i))
-        .collect();
+    let starts = (0..orbits)
+        .map(|i| sampler.try_initial_state(table, law, seed, i))
+        .collect::<Result<Vec<State>, _>>()?;
     sections(billiard, &starts, collisions, threads)
 }
 

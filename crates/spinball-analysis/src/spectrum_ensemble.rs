@@ -244,9 +244,11 @@ pub fn spectrum_ensemble<B: Boundary + Sync>(
             let (starts, frames): (Vec<_>, Vec<_>) = range
                 .map(|i| {
                     let mut rng = ic_rng(seed, i);
-                    let start = sampler.sample(billiard.table(), billiard.law(), &mut rng);
-                    (start, random_frame(&mut rng))
+                    let start = sampler.try_sample(billiard.table(), billiard.law(), &mut rng)?;
+                    Ok((start, random_frame(&mut rng)))
                 })
+                .collect::<Result<Vec<_>, AnalysisError>>()?
+                .into_iter()
                 .unzip();
             match lanes.spectrum(&starts, &frames, options.collisions, options.qr_interval) {
                 Ok(out) => Ok(out
@@ -283,7 +285,7 @@ fn scalar_spectrum<B: Boundary>(
     options: &SpectrumOptions,
 ) -> Result<Spectrum, AnalysisError> {
     let mut rng = ic_rng(seed, i);
-    let start = sampler.sample(billiard.table(), billiard.law(), &mut rng);
+    let start = sampler.try_sample(billiard.table(), billiard.law(), &mut rng)?;
     lyapunov_spectrum(billiard, start, options, &mut rng).map_err(|e| e.at_index(i))
 }
 

@@ -48,7 +48,8 @@ impl Starts {
     /// `law`, and its stream positioned after the state (for the direction).
     ///
     /// # Errors
-    /// [`AnalysisError::InvalidOption`] for an index past the end of a list.
+    /// [`AnalysisError::InvalidOption`] for an index past the end of a list;
+    /// [`AnalysisError::NoRoom`] if the sampler finds no room in the table.
     pub fn draw<B: Boundary>(
         &self,
         table: &B,
@@ -58,7 +59,7 @@ impl Starts {
     ) -> Result<(State, Pcg64), AnalysisError> {
         let mut rng = ic_rng(seed, index);
         let state = match self {
-            Starts::Sampled(sampler) => sampler.sample(table, law, &mut rng),
+            Starts::Sampled(sampler) => sampler.try_sample(table, law, &mut rng)?,
             Starts::States(states) => *usize::try_from(index)
                 .ok()
                 .and_then(|i| states.get(i))

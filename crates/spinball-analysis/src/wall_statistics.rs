@@ -413,7 +413,7 @@ pub fn wall_statistics_ensemble<B: Boundary + Sync>(
         ));
     }
     let parts = map_indices(ics, threads, |i| {
-        let start = sampler.initial_state(billiard.table(), billiard.law(), seed, i);
+        let start = sampler.try_initial_state(billiard.table(), billiard.law(), seed, i)?;
         wall_statistics(billiard, start, collisions).map_err(|e| e.at_index(i))
     })?;
     let mut total = WallStatistics::new(billiard.law());

@@ -198,3 +198,29 @@ fn explicit_states_run_like_drawn_ones_and_fail_alike() {
     assert_eq!(on_lanes, on_scalar);
     assert!(matches!(Starts::from(Sampler::Paper), Starts::Sampled(_)));
 }
+
+/// A ring 0.001 wide (a unit disk with a hole of radius 0.999): the paper's
+/// draw (positions that stay inside when scaled up by 1/0.99) has no room.
+/// Both engines stop with the same typed error instead of retrying forever;
+/// the microcanonical draw runs.
+#[test]
+fn a_ring_too_thin_for_the_paper_draw_is_an_error_on_both_engines() {
+    let ring = SegmentTable::with_holes(
+        vec![Segment::Arc(
+            ArcSegment::new(DVec2::ZERO, 1.0, 0.0, TAU).unwrap(),
+        )],
+        vec![vec![Segment::Arc(
+            ArcSegment::new(DVec2::ZERO, 0.999, 0.0, -TAU).unwrap(),
+        )]],
+    )
+    .unwrap();
+    let e = Ensemble::new(ring, SpinLaw::new(0.5).unwrap())
+        .with_ics(16)
+        .with_collisions(100);
+    let on_lanes = e.clone().run().unwrap_err();
+    let on_scalar = e.clone().with_engine(Engine::Scalar).run().unwrap_err();
+    assert!(matches!(on_lanes, AnalysisError::NoRoom(_)), "{on_lanes}");
+    assert_eq!(on_lanes, on_scalar);
+    let drawn = e.with_sampler(Sampler::Microcanonical).run().unwrap();
+    assert!(drawn.mean.is_finite());
+}

@@ -120,3 +120,21 @@ pub enum StepError {
         position: DVec2,
     },
 }
+
+/// A sampler that finds no room in the table: no point of the
+/// [`MAX_INTERIOR_DRAWS`](spinball_geometry::MAX_INTERIOR_DRAWS) drawn from
+/// its bounding box was inside the region it draws from.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+#[error(
+    "the {sampler} sampler found no room in this table: none of {draws} points drawn from its bounding box lay in {region} (the table fills almost none of its box{hint})"
+)]
+pub struct NoRoom {
+    /// `paper` or `microcanonical`.
+    pub sampler: &'static str,
+    /// What the points had to lie in.
+    pub region: &'static str,
+    /// How many were drawn.
+    pub draws: u64,
+    /// What to try instead.
+    pub hint: &'static str,
+}

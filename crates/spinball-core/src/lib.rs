@@ -49,7 +49,7 @@ pub mod tangent;
 pub use billiard::{Billiard, Run};
 pub use collision::Collision;
 pub use direction::random_direction;
-pub use error::{LaunchError, PerturbationError, SpinLawError, StepError};
+pub use error::{LaunchError, NoRoom, PerturbationError, SpinLawError, StepError};
 pub use observer::{EnergyMonitor, Observer, Recorder};
 pub use perturbation::{MAX_DELTA0, MIN_DELTA0, Perturbation};
 pub use sampler::{PAPER_SHRINK, PAPER_SPIN_FRACTION, Sampler, UnknownSampler, ic_rng};

@@ -27,6 +27,7 @@ use rand_pcg::Pcg64;
 use spinball_geometry::Boundary;
 use thiserror::Error;
 
+use crate::error::NoRoom;
 use crate::spin_law::SpinLaw;
 use crate::state::State;
 
@@ -69,16 +70,29 @@ impl Sampler {
     /// Draw one state (energy ½) for `table` and `law` from `rng`.
     ///
     /// Order of draws: position (rejection), then direction, then spin.
-    pub fn sample<B: Boundary, R: Rng + ?Sized>(
+    ///
+    /// # Errors
+    /// [`NoRoom`] if no position of
+    /// [`MAX_INTERIOR_DRAWS`](spinball_geometry::MAX_INTERIOR_DRAWS) drawn
+    /// from the table's bounding box was inside (for the paper sampler:
+    /// inside the table shrunk by [`PAPER_SHRINK`], which a ring or a
+    /// corridor narrower than 1% of the table's size does not have).
+    pub fn try_sample<B: Boundary, R: Rng + ?Sized>(
         &self,
         table: &B,
         law: &SpinLaw,
         rng: &mut R,
-    ) -> State {
+    ) -> Result<State, NoRoom> {
         let alpha = law.alpha();
-        match self {
+        let shrink = match self {
+            Sampler::Paper => PAPER_SHRINK,
+            Sampler::Microcanonical => 1.0,
+        };
+        let position = table
+            .try_sample_interior(rng, shrink)
+            .ok_or_else(|| self.no_room())?;
+        Ok(match self {
             Sampler::Paper => {
-                let position = table.sample_interior(rng, PAPER_SHRINK);
                 let theta = TAU * rng.random::<f64>();
                 let (spin, speed) = if alpha > 0.0 {
                     let u_max = PAPER_SPIN_FRACTION / alpha.sqrt();
@@ -90,7 +104,6 @@ impl Sampler {
                 State::new(position, DVec2::from_angle(theta) * speed, spin)
             }
             Sampler::Microcanonical => {
-                let position = table.sample_interior(rng, 1.0);
                 let phi = TAU * rng.random::<f64>();
                 let (z, spin) = if alpha > 0.0 {
                     let z = 2.0 * rng.random::<f64>() - 1.0;
@@ -101,7 +114,39 @@ impl Sampler {
                 let speed = (1.0 - z * z).sqrt();
                 State::new(position, DVec2::from_angle(phi) * speed, spin)
             }
+        })
+    }
+
+    fn no_room(&self) -> NoRoom {
+        let (region, hint) = match self {
+            Sampler::Paper => (
+                "the table shrunk by 0.99 about its box centre",
+                "; the paper sampler needs a region 1% of the table's size deep; try the microcanonical sampler or explicit states",
+            ),
+            Sampler::Microcanonical => ("the table", "; give explicit states instead"),
+        };
+        NoRoom {
+            sampler: self.name(),
+            region,
+            draws: spinball_geometry::MAX_INTERIOR_DRAWS,
+            hint,
         }
+    }
+
+    /// [`try_sample`](Self::try_sample) for a table known to have room (every
+    /// built-in table has).
+    ///
+    /// # Panics
+    /// With [`NoRoom`]'s message where `try_sample` returns it.
+    #[must_use]
+    pub fn sample<B: Boundary, R: Rng + ?Sized>(
+        &self,
+        table: &B,
+        law: &SpinLaw,
+        rng: &mut R,
+    ) -> State {
+        self.try_sample(table, law, rng)
+            .unwrap_or_else(|e| panic!("{e}"))
     }
 
     /// Initial condition `index` of the run with `seed` (from [`ic_rng`]).
@@ -113,6 +158,20 @@ impl Sampler {
         index: u64,
     ) -> State {
         self.sample(table, law, &mut ic_rng(seed, index))
+    }
+
+    /// [`initial_state`](Self::initial_state), fallibly.
+    ///
+    /// # Errors
+    /// [`NoRoom`] as [`try_sample`](Self::try_sample).
+    pub fn try_initial_state<B: Boundary>(
+        &self,
+        table: &B,
+        law: &SpinLaw,
+        seed: u64,
+        index: u64,
+    ) -> Result<State, NoRoom> {
+        self.try_sample(table, law, &mut ic_rng(seed, index))
     }
 
     /// `paper` or `microcanonical`.

@@ -144,3 +144,41 @@ fn each_initial_condition_has_its_own_reproducible_stream() {
         assert_ne!(forward[0], sampler.initial_state(&table, &law, 10, 0));
     }
 }
+
+/// A corridor 0.009 wide and 2 long, bent into an L: no point of it, scaled
+/// up by 1/0.99 about its box centre, stays inside, so the paper's draw has
+/// no room (it used to retry forever); the microcanonical draw has.
+#[test]
+fn a_table_without_room_for_the_paper_draw_is_an_error_not_a_hang() {
+    use glam::DVec2;
+    use spinball_core::SpinLaw;
+    use spinball_geometry::{MAX_INTERIOR_DRAWS, SegmentTable};
+
+    let w = 0.009;
+    let corridor = SegmentTable::polygon(&[
+        DVec2::new(0.0, 0.0),
+        DVec2::new(2.0, 0.0),
+        DVec2::new(2.0, w),
+        DVec2::new(w, w),
+        DVec2::new(w, 2.0),
+        DVec2::new(0.0, 2.0),
+    ])
+    .unwrap();
+    let law = SpinLaw::new(0.5).unwrap();
+    let err = Sampler::Paper
+        .try_initial_state(&corridor, &law, 1, 0)
+        .unwrap_err();
+    assert_eq!(err.sampler, "paper");
+    assert_eq!(err.draws, MAX_INTERIOR_DRAWS);
+    assert!(err.to_string().contains("microcanonical"), "{err}");
+    // The corridor fills ~0.9% of its box: the whole-table draw finds it.
+    let s = Sampler::Microcanonical
+        .try_initial_state(&corridor, &law, 1, 0)
+        .unwrap();
+    assert!(corridor.contains(s.position));
+    // The fallible draw is the infallible one where there is room.
+    assert_eq!(
+        Some(s),
+        Some(Sampler::Microcanonical.initial_state(&corridor, &law, 1, 0))
+    );
+}

@@ -14,6 +14,12 @@ pub use crate::aabb::Aabb;
 use crate::hit::Hit;
 use crate::shape::Shape;
 
+/// How many candidates [`Boundary::try_sample_interior`] draws from the
+/// bounding box before it gives up: 2²², a fraction of a second. A table
+/// filling 10⁻⁵ of its box then fails to find room with probability
+/// `e^-42`.
+pub const MAX_INTERIOR_DRAWS: u64 = 1 << 22;
+
 /// Fixed direction for the default chord test, chosen to avoid passing exactly
 /// through the vertices of tables with rational coordinates.
 const PROBE: DVec2 = DVec2::new(0.754_877_666_246_692_7, 0.569_840_290_998_053_2);
@@ -169,15 +175,19 @@ pub trait Boundary {
     }
 
     /// A point drawn uniformly from the table shrunk by `shrink` (`1.0` for the
-    /// whole table), by rejection from the bounding box.
-    fn sample_interior<R: Rng + ?Sized>(&self, rng: &mut R, shrink: f64) -> DVec2
+    /// whole table), by rejection from the bounding box: at most
+    /// [`MAX_INTERIOR_DRAWS`] candidates, `None` if none was inside (a table,
+    /// or shrunk table, that fills almost none of its box: a ring or a
+    /// corridor narrower than `1 − shrink` of its size, a thin strip across
+    /// its box).
+    fn try_sample_interior<R: Rng + ?Sized>(&self, rng: &mut R, shrink: f64) -> Option<DVec2>
     where
         Self: Sized,
     {
         let bx = self.aabb();
         let c = bx.center();
         let half = 0.5 * bx.size() * shrink;
-        loop {
+        (0..MAX_INTERIOR_DRAWS).find_map(|_| {
             let p = c + DVec2::new(
                 half.x * (2.0 * rng.random::<f64>() - 1.0),
                 half.y * (2.0 * rng.random::<f64>() - 1.0),
@@ -187,10 +197,25 @@ pub trait Boundary {
             } else {
                 self.contains_shrunk(p, shrink)
             };
-            if inside {
-                return p;
-            }
-        }
+            inside.then_some(p)
+        })
+    }
+
+    /// [`try_sample_interior`](Self::try_sample_interior) for a table known
+    /// to have room.
+    ///
+    /// # Panics
+    /// If no candidate of [`MAX_INTERIOR_DRAWS`] was inside (fallible
+    /// callers use `try_sample_interior`).
+    fn sample_interior<R: Rng + ?Sized>(&self, rng: &mut R, shrink: f64) -> DVec2
+    where
+        Self: Sized,
+    {
+        self.try_sample_interior(rng, shrink).unwrap_or_else(|| {
+            panic!(
+                "no point of {MAX_INTERIOR_DRAWS} drawn from the bounding box was inside the table shrunk by {shrink}"
+            )
+        })
     }
 
     /// The wall contact at Birkhoff arc length `s` (taken modulo the
@@ -252,6 +277,9 @@ impl<B: Boundary> Boundary for &B {
     }
     fn sample_interior<R: Rng + ?Sized>(&self, rng: &mut R, shrink: f64) -> DVec2 {
         (**self).sample_interior(rng, shrink)
+    }
+    fn try_sample_interior<R: Rng + ?Sized>(&self, rng: &mut R, shrink: f64) -> Option<DVec2> {
+        (**self).try_sample_interior(rng, shrink)
     }
     fn birkhoff(&self, hit: &Hit, velocity: DVec2) -> (f64, f64) {
         (**self).birkhoff(hit, velocity)

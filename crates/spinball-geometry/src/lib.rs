@@ -61,7 +61,7 @@ pub mod table_file;
 
 pub use aabb::Aabb;
 pub use arc::{ArcSegment, cast_concave_circle, cast_convex_circle};
-pub use boundary::Boundary;
+pub use boundary::{Boundary, MAX_INTERIOR_DRAWS};
 pub use circle::Circle;
 pub use error::GeometryError;
 pub use hit::{Hit, WallId, tangent_of};

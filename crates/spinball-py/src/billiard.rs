@@ -100,6 +100,8 @@ impl PyBilliard {
     /// The initial conditions `first_index .. first_index + n` that an
     /// ensemble with `seed` and `sampler` (`"paper"` or `"microcanonical"`)
     /// runs, as an `(n, 5)` array of `(x, y, vx, vy, u)` (energy ½).
+    /// Raises `ValueError` if the sampler finds no room in the table (the
+    /// paper sampler in a ring or corridor narrower than 1% of its size).
     #[pyo3(signature = (n, seed = 0, sampler = None, first_index = 0))]
     fn initial_states<'py>(
         &self,
@@ -113,13 +115,19 @@ impl PyBilliard {
         let first = count("first_index", first_index, 0)?;
         let draw: Sampler = crate::args::sampler(sampler)?;
         let law = self.law;
-        let flat = py.detach(|| {
-            with_table!(&self.table, |t| {
-                (first..first + n)
-                    .flat_map(|i| draw.initial_state(t, &law, seed, i).to_array())
-                    .collect::<Vec<f64>>()
+        let flat = py
+            .detach(|| {
+                with_table!(&self.table, |t| {
+                    (first..first + n)
+                        .map(|i| {
+                            draw.try_initial_state(t, &law, seed, i)
+                                .map(|s| s.to_array())
+                        })
+                        .collect::<Result<Vec<[f64; 5]>, _>>()
+                })
             })
-        });
+            .map_err(|e| value_error(e.to_string()))?
+            .concat();
         let array = Array2::from_shape_vec((n as usize, 5), flat)
             .map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
         Ok(array.into_pyarray(py))

@@ -39,7 +39,8 @@ pub fn analysis(e: AnalysisError) -> PyErr {
     match e {
         AnalysisError::InvalidOption { .. }
         | AnalysisError::Launch { .. }
-        | AnalysisError::Geometry(_) => value_error(e.to_string()),
+        | AnalysisError::Geometry(_)
+        | AnalysisError::NoRoom(_) => value_error(e.to_string()),
         AnalysisError::SpinLaw(law) => spin_law(law),
         other => PyRuntimeError::new_err(other.to_string()),
     }
