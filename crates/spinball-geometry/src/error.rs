@@ -120,7 +120,7 @@ pub enum GeometryError {
     },
     /// Consecutive walls of a boundary loop do not meet.
     #[error(
-        "boundary loop {lp} is open: wall {index} ends at ({x1}, {y1}) but the next starts at ({x2}, {y2})"
+        "boundary loop {lp} is open: wall {index} ends at ({x1}, {y1}) but the next starts at ({x2}, {y2}) (walls must meet within 1e-9 of the table size, two arcs within 64 machine epsilons of it)"
     )]
     OpenLoop {
         /// Index of the loop.
@@ -163,6 +163,16 @@ pub const MAX_STADIUM_A: f64 = 1e8;
 /// obstacle's `r²` drowns in the rounding of `|x|² ~ l²` and the ball flies
 /// through it.
 pub const MIN_SINAI_RATIO: f64 = 1e-6;
+/// Smallest radius of an arc of a [`SegmentTable`](crate::SegmentTable),
+/// as a fraction of the table's size (half its box's diagonal): as for the
+/// Sinai obstacle, a smaller arc's `r²` drowns in the rounding of squared
+/// distances across the table.
+pub const MIN_ARC_RATIO: f64 = 1e-6;
+/// Largest distance of a [`SegmentTable`](crate::SegmentTable)'s
+/// coordinates from the origin, in table sizes: coordinates round by `ε`
+/// of their size, and the walls' tolerance follows them (`64 ε` of the
+/// largest coordinate, `1.4e-8` of the table at this bound).
+pub const MAX_OFFSET_RATIO: f64 = 1e6;
 /// Smallest channel `(l − r) / l` of a [`Sinai`](crate::Sinai) table: the
 /// four corners must stay wider than the walls' tolerance (`64 ε l`).
 pub const MIN_SINAI_GAP: f64 = 1e-12;

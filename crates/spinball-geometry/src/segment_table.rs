@@ -38,7 +38,7 @@ use glam::DVec2;
 use crate::aabb::Aabb;
 use crate::arc::ArcSegment;
 use crate::boundary::Boundary;
-use crate::error::GeometryError;
+use crate::error::{GeometryError, MAX_OFFSET_RATIO, MIN_ARC_RATIO, within};
 use crate::hit::{Hit, WallId};
 use crate::line::{Approach, LineSegment};
 use crate::loop_check::check_loops;
@@ -84,6 +84,42 @@ pub enum FlatVisit {
     Pair(usize, usize),
 }
 
+/// Check that each wall of loop `li` ends where the next begins, within
+/// `1e-9 scale`, and join the ends of a junction that a cast's tolerance
+/// (`slack`) does not bridge: the straight wall's end (or the next straight
+/// wall's start) is moved onto the other wall's. Two arcs cannot be moved
+/// and must meet within `slack`.
+fn close_loop(li: usize, lp: &mut [Segment], scale: f64, slack: f64) -> Result<(), GeometryError> {
+    let n = lp.len();
+    for i in 0..n {
+        let j = (i + 1) % n;
+        let (e, s) = (lp[i].end(), lp[j].start());
+        let gap = (e - s).length();
+        let open = GeometryError::OpenLoop {
+            lp: li,
+            index: i,
+            x1: e.x,
+            y1: e.y,
+            x2: s.x,
+            y2: s.y,
+        };
+        if gap > 1e-9 * scale {
+            return Err(open);
+        }
+        if gap <= slack {
+            continue;
+        }
+        match (lp[i], lp[j]) {
+            (_, Segment::Line(next)) => lp[j] = Segment::Line(LineSegment::new(e, next.end())?),
+            (Segment::Line(w), Segment::Arc(_)) => {
+                lp[i] = Segment::Line(LineSegment::new(w.start(), s)?);
+            }
+            (Segment::Arc(_), Segment::Arc(_)) => return Err(open),
+        }
+    }
+    Ok(())
+}
+
 impl SegmentTable {
     /// A table bounded by one counter-clockwise loop of walls.
     ///
@@ -98,17 +134,28 @@ impl SegmentTable {
     /// # Errors
     /// [`GeometryError::TooFewWalls`] for an empty loop (or a single straight
     /// wall), [`GeometryError::OpenLoop`] if a wall does not end where the next
-    /// begins (within `1e-9` of the table size), [`GeometryError::WrongOrientation`]
+    /// begins (within `1e-9` of the table size; two arcs within the hit
+    /// tolerance, `64 ε` of it), [`GeometryError::WrongOrientation`]
     /// for an outer loop that is not counter-clockwise or a hole that is not
     /// clockwise, [`GeometryError::Crossing`] for walls that cross or touch
     /// away from the shared end of consecutive walls (a self-intersecting
     /// loop, a hole crossing the outer loop or another hole),
+    /// [`GeometryError::OutOfRange`] for an arc of radius below
+    /// [`MIN_ARC_RATIO`](crate::error::MIN_ARC_RATIO) of the table size (half its box's diagonal) or a
+    /// coordinate more than [`MAX_OFFSET_RATIO`](crate::error::MAX_OFFSET_RATIO) sizes from the origin,
     /// [`GeometryError::Overlap`] for walls running along each other (a
     /// zero-width spike or slit), [`GeometryError::MisplacedHole`] for a hole
     /// outside the outer loop or inside another hole.
+    ///
+    /// Where a wall ends further from the next wall's start than a hit on
+    /// either can reach past its end (`64 ε` of the table size, the
+    /// tolerance of a cast) but within `1e-9` of the size, the straight wall
+    /// of the two is moved to meet the other exactly: a gap a ball could
+    /// slip through is closed, and walls that meet to rounding are kept as
+    /// given.
     pub fn with_holes(
-        outer: Vec<Segment>,
-        holes: Vec<Vec<Segment>>,
+        mut outer: Vec<Segment>,
+        mut holes: Vec<Vec<Segment>>,
     ) -> Result<Self, GeometryError> {
         let loops: Vec<&Vec<Segment>> = std::iter::once(&outer).chain(holes.iter()).collect();
         let mut aabb: Option<Aabb> = None;
@@ -122,7 +169,33 @@ impl SegmentTable {
             return Err(GeometryError::TooFewWalls { needed: 1, got: 0 });
         };
         let scale = 0.5 * aabb.size().length();
-        for (li, lp) in loops.iter().enumerate() {
+        // Coordinates far from the origin, against the table's size, round
+        // its contacts by `ε |x|`: the tolerance follows them (and a table
+        // too far off for it to resolve the walls is refused).
+        let reach = aabb.min.abs().max(aabb.max.abs()).max_element();
+        within(
+            "largest coordinate / table size",
+            reach / scale,
+            0.0,
+            MAX_OFFSET_RATIO,
+            "coordinates round to eps times their size; beyond 1e6 sizes from the origin the walls' tolerance grows past 1e-8 of the table (move the table towards the origin)",
+        )?;
+        let slack = 64.0 * f64::EPSILON * scale.max(reach);
+        for w in std::iter::once(&outer).chain(holes.iter()).flatten() {
+            if let Segment::Arc(a) = w {
+                within(
+                    "arc radius / table size",
+                    a.radius() / scale,
+                    MIN_ARC_RATIO,
+                    f64::INFINITY,
+                    "below 1e-6 of the table's size an arc's r² drowns in the rounding of squared distances across the table and a ball flies through it",
+                )?;
+            }
+        }
+        for (li, lp) in std::iter::once(&mut outer)
+            .chain(holes.iter_mut())
+            .enumerate()
+        {
             let single_line = lp.len() == 1 && matches!(lp[0], Segment::Line(_));
             if lp.is_empty() || single_line {
                 return Err(GeometryError::TooFewWalls {
@@ -130,21 +203,9 @@ impl SegmentTable {
                     got: lp.len(),
                 });
             }
-            for (i, w) in lp.iter().enumerate() {
-                let next = lp[(i + 1) % lp.len()];
-                let (e, s) = (w.end(), next.start());
-                if (e - s).length() > 1e-9 * scale {
-                    return Err(GeometryError::OpenLoop {
-                        lp: li,
-                        index: i,
-                        x1: e.x,
-                        y1: e.y,
-                        x2: s.x,
-                        y2: s.y,
-                    });
-                }
-            }
+            close_loop(li, lp, scale, slack)?;
         }
+        let loops: Vec<&Vec<Segment>> = std::iter::once(&outer).chain(holes.iter()).collect();
         check_loops(&loops, scale)?;
         for (li, lp) in loops.iter().enumerate() {
             let area2: f64 = lp
@@ -174,7 +235,7 @@ impl SegmentTable {
             bases,
             perimeter: s,
             aabb,
-            slack: 64.0 * f64::EPSILON * scale,
+            slack,
             visits,
         })
     }
@@ -235,7 +296,8 @@ impl SegmentTable {
 
     /// The length tolerance of the casts: hits within it of a wall's end
     /// count, and a ball within it behind a wall is on the wall
-    /// (`64 ε` times the table size).
+    /// (`64 ε` times the table size, or times its largest coordinate if
+    /// that is larger).
     #[must_use]
     pub fn slack(&self) -> f64 {
         self.slack

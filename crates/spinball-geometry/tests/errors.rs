@@ -256,3 +256,106 @@ fn table_specs_reject_bad_strings() {
         assert!(!e.to_string().is_empty());
     }
 }
+
+/// A wall end 5e-10 of the size short of the next wall's start: within the
+/// closing tolerance (1e-9) but beyond a cast's (64 ε), so a ball aimed
+/// at the gap used to slip out of the table. The straight wall is joined
+/// onto its neighbour, and the ball hits the corner.
+#[test]
+fn a_gap_a_ball_could_slip_through_is_closed() {
+    let mut gap = square_ccw();
+    gap[3] = line((0.0, 1.0 - 5e-10), (0.0, 0.0));
+    let t = SegmentTable::new(gap).unwrap();
+    assert_eq!(t.walls()[3].start(), DVec2::new(0.0, 1.0));
+    let from = DVec2::new(0.5, 0.5);
+    let hit = t
+        .cast(from, DVec2::new(0.0, 1.0 - 2.5e-10) - from)
+        .expect("the ball meets a wall");
+    assert!(hit.point.x.abs() < 1e-9 && (hit.point.y - 1.0).abs() < 1e-9);
+    // Walls that meet to rounding are kept as given.
+    let mut close = square_ccw();
+    close[3] = line((0.0, 1.0 - 1e-16), (0.0, 0.0));
+    let t = SegmentTable::new(close).unwrap();
+    assert_eq!(t.walls()[3].start(), DVec2::new(0.0, 1.0 - 1e-16));
+    // Two arcs cannot be moved: they must meet within the cast's tolerance.
+    let arcs = vec![
+        Segment::Arc(ArcSegment::new(DVec2::ZERO, 1.0, 0.0, PI).unwrap()),
+        Segment::Arc(ArcSegment::new(DVec2::ZERO, 1.0, PI + 1e-10, PI - 1e-10).unwrap()),
+    ];
+    let err = SegmentTable::new(arcs).unwrap_err();
+    assert!(
+        matches!(err, GeometryError::OpenLoop { index: 0, .. }),
+        "{err}"
+    );
+}
+
+/// A disk hole of radius 1e-9 in a 4 × 4 square: its `r²` drowns in the
+/// rounding of squared distances across the table and a ball flew through
+/// it. Arcs below 1e-6 of the table's size are refused; 1e-5 is kept.
+#[test]
+fn an_arc_too_small_for_the_table_is_refused() {
+    let square = |s: f64| {
+        vec![
+            line((0.0, 0.0), (s, 0.0)),
+            line((s, 0.0), (s, s)),
+            line((s, s), (0.0, s)),
+            line((0.0, s), (0.0, 0.0)),
+        ]
+    };
+    let hole = |r: f64| {
+        vec![Segment::Arc(
+            ArcSegment::new(DVec2::new(2.0, 2.0), r, 0.0, -TAU).unwrap(),
+        )]
+    };
+    let err = SegmentTable::with_holes(square(4.0), vec![hole(1e-9)]).unwrap_err();
+    assert!(
+        matches!(
+            err,
+            GeometryError::OutOfRange {
+                name: "arc radius / table size",
+                min: 1e-6,
+                ..
+            }
+        ),
+        "{err}"
+    );
+    let t = SegmentTable::with_holes(square(4.0), vec![hole(1e-4)]).unwrap();
+    // Aimed at the small disk, the ball meets it.
+    let hit = t.cast(DVec2::new(1.0, 1.5), DVec2::new(1.0, 0.5)).unwrap();
+    assert!(
+        (hit.point - DVec2::new(2.0, 2.0)).length() < 2e-4,
+        "{:?}",
+        hit.point
+    );
+}
+
+/// A square of side 1 placed 1e7 sizes from the origin: its coordinates
+/// cannot resolve the walls to the casts' tolerance, so it is refused; at
+/// 1e3 sizes it is kept, with a tolerance that follows the coordinates.
+#[test]
+fn a_table_too_far_from_the_origin_is_refused() {
+    let at = |o: f64| {
+        SegmentTable::polygon(&[
+            DVec2::new(o, o),
+            DVec2::new(o + 1.0, o),
+            DVec2::new(o + 1.0, o + 1.0),
+            DVec2::new(o, o + 1.0),
+        ])
+    };
+    let err = at(1e7).unwrap_err();
+    assert!(
+        matches!(
+            err,
+            GeometryError::OutOfRange {
+                name: "largest coordinate / table size",
+                ..
+            }
+        ),
+        "{err}"
+    );
+    // Centred: the tolerance is 64 ε of the size (half the diagonal).
+    let near = at(-0.5).unwrap();
+    let far = at(1e3).unwrap();
+    assert_eq!(near.slack(), 64.0 * f64::EPSILON * 0.5 * 2f64.sqrt());
+    assert!(far.slack() > 1e3 * near.slack());
+}
