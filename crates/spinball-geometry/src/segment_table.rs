@@ -141,8 +141,8 @@ impl SegmentTable {
     /// away from the shared end of consecutive walls (a self-intersecting
     /// loop, a hole crossing the outer loop or another hole),
     /// [`GeometryError::OutOfRange`] for an arc of radius below
-    /// [`MIN_ARC_RATIO`](crate::error::MIN_ARC_RATIO) of the table size (half its box's diagonal) or a
-    /// coordinate more than [`MAX_OFFSET_RATIO`](crate::error::MAX_OFFSET_RATIO) sizes from the origin,
+    /// [`MIN_ARC_RATIO`] of the table size (half its box's diagonal) or a
+    /// coordinate more than [`MAX_OFFSET_RATIO`] sizes from the origin,
     /// [`GeometryError::Overlap`] for walls running along each other (a
     /// zero-width spike or slit), [`GeometryError::MisplacedHole`] for a hole
     /// outside the outer loop or inside another hole.
