@@ -14,7 +14,7 @@
 //! the finite-time Lyapunov exponent (FTLE) of the trajectory.
 
 use rand::Rng;
-use spinball_core::{Ball, Billiard, Perturbation, State, TangentVector};
+use spinball_core::{Ball, Billiard, Perturbation, State, TangentVector, Units};
 use spinball_geometry::Boundary;
 
 use crate::error::AnalysisError;
@@ -279,6 +279,11 @@ pub fn largest_lyapunov<B: Boundary, R: Rng + ?Sized>(
             }
         }
         Method::Tangent => {
+            // The growth is measured in units (`Units`): `Σ ln` of the plain
+            // norms taken off telescopes to the plain growth, and the end
+            // and start vectors' lengths in units turn it into theirs.
+            let units = Units::new(billiard.table(), &start, billiard.law());
+            let from = units.measure(&direction);
             let mut tv = [direction];
             for n in 1..=options.collisions {
                 let c = billiard.step_tangent(&mut ball, &mut tv)?;
@@ -286,7 +291,14 @@ pub fn largest_lyapunov<B: Boundary, R: Rng + ?Sized>(
                 let norm = tv[0].norm();
                 logs.push(norm);
                 tv[0] = tv[0] * (1.0 / norm);
-                record(n, time, &logs, &mut history);
+                if n.is_multiple_of(stride) || n == options.collisions {
+                    let mut measured = logs;
+                    measured.push(units.measure(&tv[0]) / from);
+                    record(n, time, &measured, &mut history);
+                    if n == options.collisions {
+                        logs = measured;
+                    }
+                }
             }
         }
     }

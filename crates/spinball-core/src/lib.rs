@@ -45,6 +45,7 @@ pub mod spin_law;
 pub mod state;
 pub mod stuck;
 pub mod tangent;
+pub mod units;
 
 pub use billiard::{Billiard, Run};
 pub use collision::Collision;
@@ -57,6 +58,7 @@ pub use spin_law::SpinLaw;
 pub use state::{Ball, MAX_SPEED, MIN_SPEED, State};
 pub use stuck::MAX_ZERO_TIME_RUN;
 pub use tangent::{Jacobian, MAX_QR_INTERVAL, TangentFrame, TangentVector, tangent_collision};
+pub use units::Units;
 
 pub use rand_pcg::Pcg64;
 pub use spinball_geometry::{Boundary, Hit};

@@ -30,6 +30,7 @@ use crate::error::PerturbationError;
 use crate::spin_law::SpinLaw;
 use crate::state::State;
 use crate::tangent::TangentVector;
+use crate::units::Units;
 
 /// Smallest accepted `δ0` (relative to the units): the separation must be
 /// at least `2.2e-16 / 1e-11 ≈ 2e-5` above the rounding of the speed.
@@ -52,11 +53,6 @@ pub struct Perturbation {
     inv_units: [f64; 5],
 }
 
-/// The power of two nearest `x > 0` (on a log scale).
-fn nearest_pow2(x: f64) -> f64 {
-    2f64.powi(x.log2().round() as i32)
-}
-
 impl Perturbation {
     /// The perturbation `delta0` for a ball launched in `state` on `table`
     /// under `law`.
@@ -73,15 +69,14 @@ impl Perturbation {
         delta0: f64,
     ) -> Result<Self, PerturbationError> {
         check_delta0(delta0)?;
-        let length = nearest_pow2(table.unit_length());
-        let speed = nearest_pow2(law.norm2(state.velocity, state.spin).sqrt());
+        let units = Units::new(table, state, law).units();
+        let length = units[0];
         let b = table.aabb();
         let extent = b.min.abs().max(b.max.abs()).max_element();
         let separation = delta0 * length;
         if !(MIN_ULPS * f64::EPSILON * extent <= separation) {
             return Err(PerturbationError::Unresolved { separation, extent });
         }
-        let units = [length, length, speed, speed, speed];
         Ok(Perturbation {
             delta0,
             scaled: units.map(|u| delta0 * u),

@@ -9,7 +9,9 @@
 //! its initial condition.
 
 use spinball_core::perturbation::check_delta0;
-use spinball_core::{Billiard, MAX_QR_INTERVAL, Perturbation, SpinLaw, State, TangentVector};
+use spinball_core::{
+    Billiard, MAX_QR_INTERVAL, Perturbation, SpinLaw, State, TangentVector, Units,
+};
 use spinball_geometry::{Boundary, SegmentTable, Shape, Table};
 
 use crate::dispatch::Dispatch;
@@ -210,30 +212,9 @@ impl<B: Boundary> LaneBilliard<B> {
                     .map_err(|source| LanesError::Perturbation { index, source })
             })
             .collect::<Result<Vec<_>, _>>()?;
-        // Starts with the same units run together (on the samplers' energy
-        // shell that is all of them); outcomes go back in input order.
-        let mut out: Vec<Option<Stretch>> = vec![None; starts.len()];
-        let mut todo: Vec<usize> = (0..starts.len()).collect();
-        while let Some(&first) = todo.first() {
-            let p = perturbations[first];
-            let (group, rest): (Vec<usize>, Vec<usize>) =
-                todo.into_iter().partition(|&i| perturbations[i] == p);
-            let part: Vec<_> = group.iter().map(|&i| ins[i]).collect();
-            let got = self
-                .runner
-                .finite_difference(&part, &p, collisions)
-                .map_err(|e| match e {
-                    LanesError::NonFinite { index } => LanesError::NonFinite {
-                        index: group[index],
-                    },
-                    other => other,
-                })?;
-            for (&i, s) in group.iter().zip(got) {
-                out[i] = Some(s);
-            }
-            todo = rest;
-        }
-        Ok(out.into_iter().flatten().collect())
+        by_key(&perturbations, &ins, |part, p| {
+            self.runner.finite_difference(part, p, collisions)
+        })
     }
 
     /// The largest Lyapunov exponent by exact tangent dynamics, starting from
@@ -254,7 +235,13 @@ impl<B: Boundary> LaneBilliard<B> {
         collisions: u64,
     ) -> Result<Vec<Stretch>, LanesError> {
         let ins = self.check_lcn(starts, directions, collisions)?;
-        self.runner.tangent(&ins, collisions)
+        let units: Vec<Units> = starts
+            .iter()
+            .map(|s| Units::new(&self.table, s, &self.runner.law))
+            .collect();
+        by_key(&units, &ins, |part, u| {
+            self.runner.tangent(part, u, collisions)
+        })
     }
 
     /// The Lyapunov spectrum by exact tangent dynamics: five vectors from
@@ -321,6 +308,35 @@ impl<B: Boundary> LaneBilliard<B> {
     }
 }
 
+/// Run `ins` in groups of equal `keys[i]` (the units of a start: on the
+/// samplers' energy shell all of them are equal), outcomes back in input
+/// order and a failing lane's index made absolute.
+fn by_key<K: PartialEq + Copy, I: Copy, O>(
+    keys: &[K],
+    ins: &[I],
+    mut run: impl FnMut(&[I], &K) -> Result<Vec<O>, LanesError>,
+) -> Result<Vec<O>, LanesError> {
+    let mut out: Vec<Option<O>> = (0..ins.len()).map(|_| None).collect();
+    let mut todo: Vec<usize> = (0..ins.len()).collect();
+    while let Some(&first) = todo.first() {
+        let key = keys[first];
+        let (group, rest): (Vec<usize>, Vec<usize>) =
+            todo.into_iter().partition(|&i| keys[i] == key);
+        let part: Vec<I> = group.iter().map(|&i| ins[i]).collect();
+        let got = run(&part, &key).map_err(|e| match e {
+            LanesError::NonFinite { index } => LanesError::NonFinite {
+                index: group[index],
+            },
+            other => other,
+        })?;
+        for (&i, o) in group.iter().zip(got) {
+            out[i] = Some(o);
+        }
+        todo = rest;
+    }
+    Ok(out.into_iter().flatten().collect())
+}
+
 impl Runner {
     // Not generic and not inlined: each kernel is compiled once, here.
     fn plain(&self, ins: &[State], collisions: u64) -> Result<Vec<Flight>, LanesError> {
@@ -345,9 +361,14 @@ impl Runner {
     fn tangent(
         &self,
         ins: &[(State, TangentVector)],
+        units: &Units,
         collisions: u64,
     ) -> Result<Vec<Stretch>, LanesError> {
-        self.run(&kernels::Tangent { collisions }, ins)
+        let k = kernels::Tangent {
+            collisions,
+            inv_units: units.inv_units(),
+        };
+        self.run(&k, ins)
     }
 
     fn spectrum(

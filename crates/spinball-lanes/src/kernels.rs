@@ -300,10 +300,13 @@ const RENORM_EVERY: u64 = 8;
 
 /// Exact tangent dynamics for the largest exponent (`largest_lyapunov` with
 /// `Method::Tangent`): one tangent vector, renormalised rarely and by powers
-/// of two; `Σ ln` is `ln |δ_final|` plus the powers taken off.
+/// of two; `Σ ln` is `ln |δ_final|` plus the powers taken off, less
+/// `ln |δ_0|`, both lengths in units (`spinball_core::Units`).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Tangent {
     pub collisions: u64,
+    /// `1 / unit` of each coordinate (powers of two).
+    pub inv_units: [f64; 5],
 }
 
 impl Kernel for Tangent {
@@ -341,13 +344,17 @@ impl Kernel for Tangent {
             left -= run;
         }
         let ok = all_finite(&v).and(time.is_finite()).and(zero_run.moving());
-        let norm = dot(&v, &v).sqrt();
+        let inv_units = self.inv_units;
+        let w: [L; 5] = five(|c| v[c] * inv_units[c]);
+        let norm = dot(&w, &w).sqrt();
         let z = r.coords();
         out.extend((0..L::N).map(|i| {
             let k = e.lane(i).wrapping_sub(1023u64.wrapping_mul(renorms)) as i64;
+            let d0 = ins[i].1.to_array();
+            let from = TangentVector::from_array(five(|c| d0[c] * inv_units[c])).norm();
             Stretch {
                 log_stretch: if mask_lane::<L>(ok, i) {
-                    norm.lane(i).ln() + k as f64 * std::f64::consts::LN_2
+                    (norm.lane(i) / from).ln() + k as f64 * std::f64::consts::LN_2
                 } else {
                     f64::NAN
                 },
@@ -498,7 +505,10 @@ mod tests {
             run_chunks::<_, _, Wide<f64, 4>, _>(Baseline, &g, &l, &fd, &ins),
             run_chunks::<_, _, f64, _>(Baseline, &g, &l, &fd, &ins)
         );
-        let tangent = Tangent { collisions: 500 };
+        let tangent = Tangent {
+            collisions: 500,
+            inv_units: [1.0; 5],
+        };
         assert_eq!(
             run_chunks::<_, _, Wide<f64, 4>, _>(Baseline, &g, &l, &tangent, &ins),
             run_chunks::<_, _, f64, _>(Baseline, &g, &l, &tangent, &ins)
@@ -613,7 +623,16 @@ mod tests {
         };
         run_chunks::<_, _, Counted, _>(Baseline, g, l, &fd, &[(s, d)]);
         let fd = report("fd", 1);
-        run_chunks::<_, _, Counted, _>(Baseline, g, l, &Tangent { collisions: N }, &[(s, d)]);
+        run_chunks::<_, _, Counted, _>(
+            Baseline,
+            g,
+            l,
+            &Tangent {
+                collisions: N,
+                inv_units: [1.0; 5],
+            },
+            &[(s, d)],
+        );
         let tangent = report("tangent", 1);
         let spectrum = Spectrum {
             collisions: N,

@@ -31,8 +31,8 @@
 //! corners, junctions and re-entrant corners and grazing their walls.
 
 use spinball_core::{
-    Ball, Billiard, Pcg64, Perturbation, Sampler, SpinLaw, State, StepError, TangentVector, ic_rng,
-    random_direction,
+    Ball, Billiard, Pcg64, Perturbation, Sampler, SpinLaw, State, StepError, TangentVector, Units,
+    ic_rng, random_direction,
 };
 use spinball_geometry::{
     ArcSegment, Boundary, Circle, DVec2, LineSegment, Rectangle, Segment, SegmentTable, Sinai,
@@ -372,7 +372,10 @@ fn assert_tangent<B: Boundary + Clone>(
                 v[0] = w;
                 powers += e;
             }
-            let log = v[0].norm().ln() + powers as f64 * std::f64::consts::LN_2;
+            // Both lengths in units (the table's and the speed's).
+            let units = Units::new(table, s, law);
+            let log = (units.measure(&v[0]) / units.measure(dir)).ln()
+                + powers as f64 * std::f64::consts::LN_2;
             (log, time)
         })
         .collect();
