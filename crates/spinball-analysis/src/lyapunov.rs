@@ -284,6 +284,11 @@ pub fn largest_lyapunov<B: Boundary, R: Rng + ?Sized>(
             // and start vectors' lengths in units turn it into theirs.
             let units = Units::new(billiard.table(), &start, billiard.law());
             let from = units.measure(&direction);
+            let measured = |logs: LogSum, v: &TangentVector| {
+                let mut m = logs;
+                m.push(units.measure(v) / from);
+                m
+            };
             let mut tv = [direction];
             for n in 1..=options.collisions {
                 let c = billiard.step_tangent(&mut ball, &mut tv)?;
@@ -291,15 +296,11 @@ pub fn largest_lyapunov<B: Boundary, R: Rng + ?Sized>(
                 let norm = tv[0].norm();
                 logs.push(norm);
                 tv[0] = tv[0] * (1.0 / norm);
-                if n.is_multiple_of(stride) || n == options.collisions {
-                    let mut measured = logs;
-                    measured.push(units.measure(&tv[0]) / from);
-                    record(n, time, &measured, &mut history);
-                    if n == options.collisions {
-                        logs = measured;
-                    }
+                if n.is_multiple_of(stride) {
+                    record(n, time, &measured(logs, &tv[0]), &mut history);
                 }
             }
+            logs = measured(logs, &tv[0]);
         }
     }
     let total = logs.total();

@@ -49,8 +49,8 @@ pub struct Perturbation {
     delta0: f64,
     /// `δ0` times the unit of each coordinate.
     scaled: [f64; 5],
-    /// `1 / unit` of each coordinate (exact: units are powers of two).
-    inv_units: [f64; 5],
+    /// The units the separation is measured in.
+    units: Units,
 }
 
 impl Perturbation {
@@ -69,8 +69,8 @@ impl Perturbation {
         delta0: f64,
     ) -> Result<Self, PerturbationError> {
         check_delta0(delta0)?;
-        let units = Units::new(table, state, law).units();
-        let length = units[0];
+        let units = Units::new(table, state, law);
+        let length = units.units()[0];
         let b = table.aabb();
         let extent = b.min.abs().max(b.max.abs()).max_element();
         let separation = delta0 * length;
@@ -79,8 +79,8 @@ impl Perturbation {
         }
         Ok(Perturbation {
             delta0,
-            scaled: units.map(|u| delta0 * u),
-            inv_units: units.map(|u| 1.0 / u),
+            scaled: units.units().map(|u| delta0 * u),
+            units,
         })
     }
 
@@ -99,7 +99,7 @@ impl Perturbation {
     /// `1 / unit` of each coordinate (powers of two).
     #[must_use]
     pub fn inv_units(&self) -> [f64; 5] {
-        self.inv_units
+        self.units.inv_units()
     }
 
     /// The initial shadow offset along the unit 5-vector `direction`:
@@ -113,8 +113,7 @@ impl Perturbation {
     /// The separation `d` measured in units, `|d ⊘ units|`.
     #[must_use]
     pub fn distance(&self, d: &TangentVector) -> f64 {
-        let z = d.to_array();
-        TangentVector::from_array(std::array::from_fn(|c| z[c] * self.inv_units[c])).norm()
+        self.units.measure(d)
     }
 }
 

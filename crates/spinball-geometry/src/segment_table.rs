@@ -157,15 +157,12 @@ impl SegmentTable {
         mut outer: Vec<Segment>,
         mut holes: Vec<Vec<Segment>>,
     ) -> Result<Self, GeometryError> {
-        let loops: Vec<&Vec<Segment>> = std::iter::once(&outer).chain(holes.iter()).collect();
-        let mut aabb: Option<Aabb> = None;
-        for lp in &loops {
-            for w in lp.iter() {
-                let b = w.aabb();
-                aabb = Some(aabb.map_or(b, |a| a.union(&b)));
-            }
-        }
-        let Some(aabb) = aabb else {
+        let Some(aabb) = std::iter::once(&outer)
+            .chain(holes.iter())
+            .flatten()
+            .map(|w| w.aabb())
+            .reduce(|a, b| a.union(&b))
+        else {
             return Err(GeometryError::TooFewWalls { needed: 1, got: 0 });
         };
         let scale = 0.5 * aabb.size().length();

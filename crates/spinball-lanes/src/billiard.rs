@@ -366,7 +366,7 @@ impl Runner {
     ) -> Result<Vec<Stretch>, LanesError> {
         let k = kernels::Tangent {
             collisions,
-            inv_units: units.inv_units(),
+            units: *units,
         };
         self.run(&k, ins)
     }

@@ -14,7 +14,7 @@
 //! entering the code compiled for it is the `dispatch` module's job, one
 //! layer up.
 
-use spinball_core::{State, TangentVector};
+use spinball_core::{State, TangentVector, Units};
 
 use crate::dynamics::{
     Balls, Law, LogProduct, Shell, TangentStep, ZeroRun, collide, pow2_renormalise, step,
@@ -305,8 +305,8 @@ const RENORM_EVERY: u64 = 8;
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Tangent {
     pub collisions: u64,
-    /// `1 / unit` of each coordinate (powers of two).
-    pub inv_units: [f64; 5],
+    /// The units the start and end vectors are measured in.
+    pub units: Units,
 }
 
 impl Kernel for Tangent {
@@ -344,14 +344,13 @@ impl Kernel for Tangent {
             left -= run;
         }
         let ok = all_finite(&v).and(time.is_finite()).and(zero_run.moving());
-        let inv_units = self.inv_units;
+        let inv_units = self.units.inv_units();
         let w: [L; 5] = five(|c| v[c] * inv_units[c]);
         let norm = dot(&w, &w).sqrt();
         let z = r.coords();
         out.extend((0..L::N).map(|i| {
             let k = e.lane(i).wrapping_sub(1023u64.wrapping_mul(renorms)) as i64;
-            let d0 = ins[i].1.to_array();
-            let from = TangentVector::from_array(five(|c| d0[c] * inv_units[c])).norm();
+            let from = self.units.measure(&ins[i].1);
             Stretch {
                 log_stretch: if mask_lane::<L>(ok, i) {
                     (norm.lane(i) / from).ln() + k as f64 * std::f64::consts::LN_2
@@ -507,7 +506,7 @@ mod tests {
         );
         let tangent = Tangent {
             collisions: 500,
-            inv_units: [1.0; 5],
+            units: Units::new(&table, &ins[0].0, &law),
         };
         assert_eq!(
             run_chunks::<_, _, Wide<f64, 4>, _>(Baseline, &g, &l, &tangent, &ins),
@@ -629,7 +628,7 @@ mod tests {
             l,
             &Tangent {
                 collisions: N,
-                inv_units: [1.0; 5],
+                units: Units::new(table, &s, law),
             },
             &[(s, d)],
         );
