@@ -41,6 +41,11 @@ def test_other_python_threads_run_during_a_computation():
 @pytest.mark.skipif(not hasattr(signal, "pthread_kill"), reason="needs POSIX signals")
 def test_ctrl_c_stops_a_long_run():
     main = threading.get_ident()
+    # Python raises KeyboardInterrupt on SIGINT only if it found SIGINT at
+    # its default when it started; a shell starting a command in the
+    # background (`.ci/run &`) hands it SIGINT ignored, and the run below
+    # would then go on for hours. Install Python's handler for this test.
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     # A run of ~1e11 collisions (hours) in batches of 64 ICs; SIGINT after 0.3 s.
     timer = threading.Timer(0.3, lambda: signal.pthread_kill(main, signal.SIGINT))
     t0 = time.perf_counter()
@@ -51,6 +56,7 @@ def test_ctrl_c_stops_a_long_run():
                         target_rel_sem=0.0, batch=64)
     finally:
         timer.cancel()
+        signal.signal(signal.SIGINT, previous)
     assert time.perf_counter() - t0 < 10.0
     # The module still works afterwards.
     assert sb.lyapunov("stadium:a=1", 0.5, ics=8, collisions=100).n_ics == 8
