@@ -3,8 +3,8 @@ example's JSON, number for number (bitwise: JSON floats are printed
 shortest-round-trip and read back exactly).
 
 The example binary is found through the environment variable
-SPINBALL_SWEEP (CI points it at target/quick-release/examples/sweep, built by
-the examples step); without it the test runs `cargo run --release
+SPINBALL_SWEEP (CI points it at target/debug/examples/sweep, built by
+`cargo test` in the optimised test profile); without it the test runs `cargo run --release
 --example sweep` from the repository root.
 """
 
