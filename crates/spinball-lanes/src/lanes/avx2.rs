@@ -213,110 +213,17 @@ impl Lanes for Avx2 {
     #[inline(always)]
     fn lookup(p: &Palette, index: Self) -> Self {
         let t = p.entries();
-        match t.len() {
-            8 => {
-                // SAFETY: AVX2 intrinsics; code with `Avx2` lanes runs only
-                // where AVX2 was detected (the type's invariant). The loads
-                // read `t[0..8]`, inside `t` (its length was just matched).
-                unsafe { Avx2(permute8(index.0, (load(t, 0), load(t, 4)))) }
-            }
-            16 => {
-                // SAFETY: as above; the loads read `t[0..16]`, inside `t`.
-                unsafe {
-                    let low = permute8(index.0, (load(t, 0), load(t, 4)));
-                    let high = permute8(index.0, (load(t, 8), load(t, 12)));
-                    // Bit 3 of the index, as the sign of both of a lane's
-                    // 32-bit halves, picks the upper eight.
-                    Avx2(_mm256_blendv_pd(low, high, index_bit(index.0, 3)))
-                }
-            }
-            n => {
-                // SAFETY: AVX2 intrinsics (and SSE4.1's `_mm_min_epu32`,
-                // which AVX2 implies); code with `Avx2` lanes runs only where
-                // AVX2 was detected (the type's invariant). The gather reads
-                // `t[k]` for each lane's index `k`, clamped to `n - 1` (a NaN
-                // or out-of-range lane converts to `i32::MIN`, which is
-                // `2^31` unsigned, and clamps too), so every read is inside
-                // `t`.
-                Avx2(unsafe {
-                    let k = _mm256_cvttpd_epi32(index.0);
-                    let k = _mm_min_epu32(k, _mm_set1_epi32(n as i32 - 1));
-                    _mm256_i32gather_pd::<8>(t.as_ptr(), k)
-                })
-            }
-        }
-    }
-}
-
-/// Four entries `t[at..at + 4]` of a palette, as 32-bit words for
-/// [`permute8`].
-///
-/// # Safety
-/// AVX is available, and `at + 4 <= t.len()`.
-#[inline(always)]
-unsafe fn load(t: &[f64], at: usize) -> __m256 {
-    debug_assert!(at + 4 <= t.len());
-    // SAFETY: AVX (the caller's promise); the 32-byte unaligned load reads
-    // `t[at..at + 4]`, inside `t` by the caller's promise.
-    unsafe { _mm256_castpd_ps(_mm256_loadu_pd(t.as_ptr().add(at))) }
-}
-
-/// The entries of an 8-entry palette `(t[0..4], t[4..8])` at each lane's
-/// index (an integer `0..8` as `f64`; any other index, NaN included, gives
-/// some entry), by moving data within registers: AVX2 has no 64-bit
-/// permute across the register by variable indices, so a lane's index `k`
-/// becomes the pair of 32-bit word indices `2k, 2k + 1`, both halves of
-/// the register are permuted by them, and bit 2 of `k` picks the half.
-/// Exactly the entries a gather would read, without the gather (slow on
-/// AMD Zen, where it issues a load per lane in microcode).
-///
-/// # Safety
-/// AVX2 is available.
-#[inline(always)]
-unsafe fn permute8(index: __m256d, (low, high): (__m256, __m256)) -> __m256d {
-    // SAFETY: AVX/AVX2 intrinsics (the caller's promise); no memory access.
-    unsafe {
-        let words = word_indices(index);
-        let from_low = _mm256_permutevar8x32_ps(low, words);
-        let from_high = _mm256_permutevar8x32_ps(high, words);
-        _mm256_castps_pd(_mm256_blendv_ps(
-            from_low,
-            from_high,
-            _mm256_castpd_ps(index_bit(index, 2)),
-        ))
-    }
-}
-
-/// Each lane's index `k` (an `f64`, truncated) as the 32-bit words `2k` and
-/// `2k + 1` of its lane.
-///
-/// # Safety
-/// AVX2 is available.
-#[inline(always)]
-unsafe fn word_indices(index: __m256d) -> __m256i {
-    // SAFETY: AVX/AVX2 intrinsics (the caller's promise); no memory access.
-    unsafe {
-        let k = _mm256_cvtepu32_epi64(_mm256_cvttpd_epi32(index));
-        let twice = _mm256_add_epi64(k, k);
-        let pair = _mm256_or_si256(twice, _mm256_slli_epi64::<32>(twice));
-        _mm256_add_epi32(pair, _mm256_setr_epi32(0, 1, 0, 1, 0, 1, 0, 1))
-    }
-}
-
-/// The lanes whose index (an `f64`, truncated) has bit `b` set (`b < 31`),
-/// as the sign of both of the lane's 32-bit halves: the bits `blendv_pd` and
-/// `blendv_ps` read (the rest is not a mask).
-///
-/// # Safety
-/// AVX2 is available.
-#[inline(always)]
-unsafe fn index_bit(index: __m256d, b: u32) -> __m256d {
-    // SAFETY: AVX/AVX2 intrinsics (the caller's promise); no memory access.
-    unsafe {
-        let k = _mm256_cvtepu32_epi64(_mm256_cvttpd_epi32(index));
-        let pair = _mm256_or_si256(k, _mm256_slli_epi64::<32>(k));
-        // Bit b to the sign of each 32-bit word.
-        _mm256_castsi256_pd(_mm256_sll_epi32(pair, _mm_cvtsi32_si128(31 - b as i32)))
+        // SAFETY: AVX2 intrinsics (and SSE4.1's `_mm_min_epu32`, which AVX2
+        // implies); code with `Avx2` lanes runs only where AVX2 was detected
+        // (the type's invariant). The gather reads `t[k]` for each lane's
+        // index `k`, clamped to `t.len() - 1` (a NaN or out-of-range lane
+        // converts to `i32::MIN`, which is `2^31` unsigned, and clamps too),
+        // so every read is inside `t`.
+        Avx2(unsafe {
+            let k = _mm256_cvttpd_epi32(index.0);
+            let k = _mm_min_epu32(k, _mm_set1_epi32(t.len() as i32 - 1));
+            _mm256_i32gather_pd::<8>(t.as_ptr(), k)
+        })
     }
 }
 
@@ -324,9 +231,9 @@ unsafe fn index_bit(index: __m256d, b: u32) -> __m256d {
 mod tests {
     use super::*;
 
-    /// `lookup` reads, bit for bit, the entry `Palette::get` reads, for
-    /// palettes that take each path (8 and 16 entries permuted, 24
-    /// gathered) and every index in every lane.
+    /// `lookup` (a gather) reads, bit for bit, the entry `Palette::get`
+    /// reads, for palettes of 8, 16 and 24 entries and every index in every
+    /// lane.
     #[test]
     fn lookup_reads_the_indexed_entry() {
         if Avx2Cpu::detect().is_none() {
