@@ -4,8 +4,8 @@ shortest-round-trip and read back exactly).
 
 The example binary is found through the environment variable
 SPINBALL_SWEEP (CI points it at target/debug/examples/sweep, built by
-`cargo test` in the optimised test profile); without it the test runs `cargo run --release
---example sweep` from the repository root.
+`cargo test` in the optimised test profile); without it the test runs
+`cargo run --release --example sweep` from the repository root.
 """
 
 import json

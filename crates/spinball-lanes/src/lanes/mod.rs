@@ -386,3 +386,57 @@ impl<const AVX512: usize, const AVX2: usize, const SSE2: usize, const PORTABLE: 
     )))]
     type Baseline = Wide<f64, PORTABLE>;
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `L::lookup` reads, bit for bit, the entry [`Palette::get`] reads, for
+    /// palettes of 8, 16 and 24 entries and every index in every lane.
+    fn lookup_reads_the_indexed_entry<L: Lanes>() {
+        for walls in [1, 5, 8, 9, 13, 16, 17, 20] {
+            // Distinct entries, a negative zero and a subnormal among them.
+            let values: Vec<f64> = (0..walls)
+                .map(|i| match i {
+                    1 => -0.0,
+                    2 => f64::MIN_POSITIVE / 3.0,
+                    _ => (i as f64 + 0.25) * if i % 2 == 0 { 1.0 } else { -1e3 },
+                })
+                .collect();
+            let p = Palette::new(values);
+            let n = p.entries().len();
+            for first in 0..n {
+                // Lane j reads entry (first + 5 j) mod n: every entry in every
+                // lane over the loop (5 is prime to every n).
+                let index: Vec<f64> = (0..L::N).map(|j| ((first + 5 * j) % n) as f64).collect();
+                let mut got = vec![0.0; L::N];
+                L::lookup(&p, L::load(&index)).store(&mut got);
+                for (j, g) in got.iter().enumerate() {
+                    assert_eq!(
+                        g.to_bits(),
+                        p.get(index[j]).to_bits(),
+                        "{walls} walls, lane {j}, index {}",
+                        index[j]
+                    );
+                }
+            }
+        }
+    }
+
+    /// On every instruction-set level this CPU has: AVX-512 permutes
+    /// palettes of 8 and 16 entries and gathers larger ones, AVX2 gathers,
+    /// the baseline reads one lane at a time.
+    #[test]
+    fn lookup_reads_the_indexed_entry_on_every_level() {
+        lookup_reads_the_indexed_entry::<<Groups<1, 1, 1, 1> as PerIsa>::Baseline>();
+        #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+        {
+            if Avx2Cpu::detect().is_some() {
+                lookup_reads_the_indexed_entry::<Avx2>();
+            }
+            if Avx512Cpu::detect().is_some() {
+                lookup_reads_the_indexed_entry::<Avx512>();
+            }
+        }
+    }
+}
