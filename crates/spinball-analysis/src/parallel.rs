@@ -53,12 +53,17 @@ impl Threads {
 }
 
 /// `f(i)` for every `i` in `indices`, in index order, on up to `threads`
-/// threads. Stops at the first error (the error of the lowest failing index
-/// is reported when running sequentially; in parallel, some failing index).
+/// threads.
+///
+/// On failure the error is the one of the **lowest** failing index, on any
+/// number of threads, so a failing ensemble reports the same initial
+/// condition however its work was split. Indices above a failure already
+/// seen are skipped; those below it still run, since one of them may fail
+/// too.
 ///
 /// # Errors
-/// The first error returned by `f`, or [`AnalysisError::InvalidOption`] if a
-/// thread pool cannot be built.
+/// The error `f` returns for the lowest failing index, or
+/// [`AnalysisError::InvalidOption`] if a thread pool cannot be built.
 pub fn map_indices<T, F>(
     indices: Range<u64>,
     threads: Threads,
@@ -71,12 +76,28 @@ where
     #[cfg(feature = "rayon")]
     {
         use rayon::prelude::*;
+        use std::sync::atomic::{AtomicU64, Ordering};
         let run = || {
-            indices
+            // The lowest index seen failing so far (`u64::MAX`: none).
+            let failed = AtomicU64::new(u64::MAX);
+            let outcomes: Vec<Option<Result<T, AnalysisError>>> = indices
                 .clone()
                 .into_par_iter()
-                .map(&f)
-                .collect::<Result<Vec<T>, AnalysisError>>()
+                .map(|i| {
+                    if i > failed.load(Ordering::Relaxed) {
+                        return None;
+                    }
+                    let outcome = f(i);
+                    if outcome.is_err() {
+                        failed.fetch_min(i, Ordering::Relaxed);
+                    }
+                    Some(outcome)
+                })
+                .collect();
+            // Every index below the lowest failure ran (an index is skipped
+            // only above a failure), so in index order that failure comes
+            // before any skipped index.
+            outcomes.into_iter().flatten().collect()
         };
         match threads {
             Threads::Fixed(1) => indices.map(&f).collect(),
@@ -165,6 +186,36 @@ mod tests {
         for _ in 0..3 {
             let squares = map_indices(0..100, Threads::Fixed(3), |i| Ok(i * i)).unwrap();
             assert_eq!(squares, (0..100).map(|i| i * i).collect::<Vec<u64>>());
+        }
+    }
+
+    #[test]
+    fn the_lowest_failing_index_is_reported_on_any_thread_count() {
+        // Index 3 fails after its lower neighbours' slow work; every index
+        // from 500 on fails at once, so a second thread starting there
+        // fails long before the first reaches 3.
+        let f = |i: u64| {
+            if i < 3 {
+                std::thread::sleep(std::time::Duration::from_millis(20));
+            }
+            if i == 3 || i >= 500 {
+                Err(AnalysisError::invalid("index", i.to_string()))
+            } else {
+                Ok(i)
+            }
+        };
+        for threads in [
+            Threads::Fixed(1),
+            Threads::Fixed(2),
+            Threads::Fixed(4),
+            Threads::All,
+        ] {
+            for _ in 0..3 {
+                let err = map_indices(0..1000, threads, f).unwrap_err();
+                assert_eq!(err, AnalysisError::invalid("index", "3"), "{threads:?}");
+                let err = map_chunks(0..1000, 7, threads, |r| r.map(f).collect()).unwrap_err();
+                assert_eq!(err, AnalysisError::invalid("index", "3"), "{threads:?}");
+            }
         }
     }
 }

@@ -18,7 +18,7 @@ use crate::geom::Geom;
 use crate::isa::{Avx2Cpu, Avx512Cpu};
 use crate::isa::{Baseline, Isa, ProvenBy};
 use crate::kernels::{Kernel, run_chunks};
-use crate::lanes::{Lanes, PerIsa};
+use crate::lanes::{Footprint, Lanes, PerIsa};
 
 /// The kernels compiled for AVX-512 F, DQ, VL and BW; `cpu` proves this CPU
 /// has them.
@@ -83,10 +83,16 @@ fn on_baseline<G: Geom, K: Kernel, L: Lanes<Needs: ProvenBy<Baseline>>>(
     run_chunks::<G, K, L, _>(Baseline, g, law, k, ins)
 }
 
+/// The register groups kernel `K` runs with on table `G`: its
+/// [`Kernel::Groups`] or its [`Kernel::BulkyGroups`], as `G`'s
+/// [`Footprint`] picks.
+type GroupsOn<K, G> =
+    <<G as Geom>::Footprint as Footprint>::Pick<<K as Kernel>::Groups, <K as Kernel>::BulkyGroups>;
+
 /// Running any [`Kernel`] at an instruction-set level.
 pub(crate) trait Dispatch: Kernel {
     /// Run over a slice at level `isa`, with this kernel's lane type for the
-    /// level ([`Kernel::Groups`]). A level this CPU lacks (only possible for
+    /// level and table ([`GroupsOn`]). A level this CPU lacks (only possible for
     /// an `isa` that did not go through [`Isa::checked`]) runs at the
     /// baseline instead, with the same results.
     fn dispatch<G: Geom>(&self, isa: Isa, g: &G, law: &Law, ins: &[Self::In]) -> Vec<Self::Out>;
@@ -98,7 +104,7 @@ impl<K: Kernel> Dispatch for K {
             #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
             Isa::Avx512 => {
                 if let Some(cpu) = Avx512Cpu::detect() {
-                    return on_avx512::<G, K, <K::Groups as PerIsa>::Avx512>(
+                    return on_avx512::<G, K, <GroupsOn<K, G> as PerIsa>::Avx512>(
                         cpu, g, law, self, ins,
                     );
                 }
@@ -106,11 +112,13 @@ impl<K: Kernel> Dispatch for K {
             #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
             Isa::Avx2 => {
                 if let Some(cpu) = Avx2Cpu::detect() {
-                    return on_avx2::<G, K, <K::Groups as PerIsa>::Avx2>(cpu, g, law, self, ins);
+                    return on_avx2::<G, K, <GroupsOn<K, G> as PerIsa>::Avx2>(
+                        cpu, g, law, self, ins,
+                    );
                 }
             }
             _ => {}
         }
-        on_baseline::<G, K, <K::Groups as PerIsa>::Baseline>(g, law, self, ins)
+        on_baseline::<G, K, <GroupsOn<K, G> as PerIsa>::Baseline>(g, law, self, ins)
     }
 }

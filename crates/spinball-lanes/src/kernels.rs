@@ -10,9 +10,9 @@
 //! or the instruction set.
 //!
 //! This module knows nothing of instruction sets beyond the lane types each
-//! kernel prefers per level ([`Kernel::Groups`]); choosing the level and
-//! entering the code compiled for it is the `dispatch` module's job, one
-//! layer up.
+//! kernel prefers per level and per table footprint ([`Kernel::Groups`],
+//! [`Kernel::BulkyGroups`]); choosing the level and entering the code
+//! compiled for it is the `dispatch` module's job, one layer up.
 
 use spinball_core::{State, TangentVector, Units};
 
@@ -30,9 +30,14 @@ pub(crate) trait Kernel: Sync {
     type In: Copy + Send + Sync;
     /// Per-initial-condition output.
     type Out: Copy + Send;
-    /// The lane type at each instruction-set level (the results do not
-    /// depend on it; it only sets how many trajectories share the registers).
+    /// The lane type at each instruction-set level on a table with a
+    /// [`LeanCast`](crate::lanes::LeanCast) (the results do not depend on
+    /// it; it only sets how many trajectories share the registers).
     type Groups: PerIsa;
+    /// The same on a table with a [`BulkyCast`](crate::lanes::BulkyCast),
+    /// whose cast leaves fewer registers free (docs/PERFORMANCE.md,
+    /// "Register groups per table").
+    type BulkyGroups: PerIsa;
     /// Independent streams of `L::N` trajectories a chunk steps in turn
     /// (each stream's landing then covers the other's division: see
     /// docs/PERFORMANCE.md, "Latency, not operations").
@@ -139,6 +144,8 @@ impl Kernel for Plain {
     /// Registers per group and stream: AVX-512 3, AVX2 2, SSE2 2, portable
     /// `f64` 2, in two streams.
     type Groups = Groups<3, 2, 2, 2>;
+    /// As on the built-in tables.
+    type BulkyGroups = Groups<3, 2, 2, 2>;
     const STREAMS: usize = 2;
 
     #[inline(always)]
@@ -229,6 +236,8 @@ impl Kernel for FiniteDifference {
     type Out = Stretch;
     /// Registers per group: AVX-512 3, AVX2 4, SSE2 4, portable `f64` 4.
     type Groups = Groups<3, 4, 4, 4>;
+    /// Two AVX2 registers per group instead of four.
+    type BulkyGroups = Groups<3, 2, 4, 4>;
 
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(
@@ -314,6 +323,8 @@ impl Kernel for Tangent {
     type Out = Stretch;
     /// Registers per group: AVX-512 3, AVX2 4, SSE2 4, portable `f64` 4.
     type Groups = Groups<3, 4, 4, 4>;
+    /// Two AVX2 registers per group instead of four.
+    type BulkyGroups = Groups<3, 2, 4, 4>;
 
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(
@@ -383,6 +394,8 @@ impl Kernel for Spectrum {
     type Out = SpectrumStretch;
     /// Registers per group: AVX-512 2, AVX2 3, SSE2 4, portable `f64` 2.
     type Groups = Groups<2, 3, 4, 2>;
+    /// Two AVX2 registers per group instead of three.
+    type BulkyGroups = Groups<2, 2, 4, 2>;
 
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(

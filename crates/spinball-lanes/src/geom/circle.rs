@@ -5,7 +5,7 @@
 
 use super::round::{Ray, Root, Round, concave_root, contact_at};
 use super::{Geom, LaneHit};
-use crate::lanes::Lanes;
+use crate::lanes::{Lanes, LeanCast};
 
 /// [`Circle`](spinball_geometry::Circle) in lanes.
 #[derive(Clone, Copy, Debug)]
@@ -34,6 +34,7 @@ pub(crate) struct CircleFound<L: Lanes> {
 
 impl Geom for LaneCircle {
     const CURVED: bool = true;
+    type Footprint = LeanCast;
     type Found<L: Lanes> = CircleFound<L>;
 
     #[inline(always)]

@@ -46,7 +46,7 @@ pub(crate) use segments::tests as segment_tables;
 pub(crate) use sinai::LaneSinai;
 pub(crate) use stadium::LaneStadium;
 
-use crate::lanes::Lanes;
+use crate::lanes::{Footprint, Lanes};
 
 /// The next wall hit of `N` balls.
 #[derive(Clone, Copy, Debug)]
@@ -72,6 +72,9 @@ pub(crate) trait Geom: Copy + Send + Sync {
     /// Whether the table has curved walls (the tangent map then needs its
     /// curvature term; flat-only tables skip it).
     const CURVED: bool;
+    /// How many registers the cast keeps live, which picks the register
+    /// groups a kernel runs this table with (never its results).
+    type Footprint: Footprint;
     /// What [`search`](Self::search) leaves for [`land`](Self::land).
     type Found<L: Lanes>: Copy;
     /// The first half of the cast: which wall each lane meets and when

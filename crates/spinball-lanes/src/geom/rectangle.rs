@@ -5,7 +5,7 @@
 //! costs one division, as in the scalar `cast_box`.
 
 use super::{Geom, LaneHit};
-use crate::lanes::{Lanes, MaskOps};
+use crate::lanes::{Lanes, LeanCast, MaskOps};
 
 /// `box_ahead` of `spinball-geometry` per lane: the wall ahead and its
 /// flight time as the undivided fraction `dist / speed`.
@@ -101,6 +101,7 @@ pub(crate) struct BoxFound<L: Lanes> {
 
 impl Geom for LaneRectangle {
     const CURVED: bool = false;
+    type Footprint = LeanCast;
     type Found<L: Lanes> = BoxFound<L>;
 
     #[inline(always)]

@@ -34,7 +34,7 @@ use spinball_geometry::{ArcSegment, DVec2, LineSegment, Segment, SegmentTable};
 use super::flat_walls::{Step, earliest, steps};
 use super::round::{Ray, Round, concave_root, contact, convex_root};
 use super::{Geom, LaneHit};
-use crate::lanes::{Lanes, MaskOps, Palette, cmp};
+use crate::lanes::{BulkyCast, Lanes, MaskOps, Palette, cmp};
 
 /// An arc's constants, as `ArcSegment::approach` and `land` use them.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -398,6 +398,7 @@ pub(crate) struct Found<L: Lanes> {
 
 impl<const CURVED: bool> Geom for Segments<'_, CURVED> {
     const CURVED: bool = CURVED;
+    type Footprint = BulkyCast;
     type Found<L: Lanes> = Found<L>;
 
     #[inline(always)]

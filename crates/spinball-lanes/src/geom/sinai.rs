@@ -9,7 +9,7 @@
 use super::rectangle::BoxAhead;
 use super::round::{Ray, Root, Round, contact_at, convex_root};
 use super::{Geom, LaneHit};
-use crate::lanes::{Lanes, MaskOps};
+use crate::lanes::{Lanes, LeanCast, MaskOps};
 
 /// [`Sinai`](spinball_geometry::Sinai) in lanes: the box and the disk; the
 /// disk only if strictly earlier (ties go to the lower wall id, a box wall).
@@ -42,6 +42,7 @@ pub(crate) struct SinaiFound<L: Lanes> {
 
 impl Geom for LaneSinai {
     const CURVED: bool = true;
+    type Footprint = LeanCast;
     type Found<L: Lanes> = SinaiFound<L>;
 
     #[inline(always)]

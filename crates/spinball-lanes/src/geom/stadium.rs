@@ -9,7 +9,7 @@
 
 use super::round::{Ray, Root, Round, concave_root, contact_at};
 use super::{Geom, LaneHit};
-use crate::lanes::{Lanes, MaskOps};
+use crate::lanes::{Lanes, LeanCast, MaskOps};
 
 /// [`Stadium`](spinball_geometry::Stadium) in lanes: the flat crossing
 /// first, then the cap on the side of the crossing.
@@ -57,6 +57,7 @@ pub(crate) struct StadiumFound<L: Lanes> {
 
 impl Geom for LaneStadium {
     const CURVED: bool = true;
+    type Footprint = LeanCast;
     type Found<L: Lanes> = StadiumFound<L>;
 
     #[inline(always)]

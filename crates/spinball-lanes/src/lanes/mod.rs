@@ -23,7 +23,8 @@
 //! This file holds the traits; each family of lane types has its own file:
 //! [`portable`] (`f64` and [`Wide`]), `sse2`, `avx2`, `avx512` (x86 only) and
 //! `counted` (tests). [`PerIsa`] names the lane type a kernel runs with at
-//! each instruction-set level.
+//! each instruction-set level, and a table's [`Footprint`] which of a
+//! kernel's two sets of counts it runs with.
 //!
 //! **Safety.** The SSE2, AVX2 and AVX-512 types call intrinsics, which is
 //! undefined behaviour on a CPU without the feature. Each type names the
@@ -385,6 +386,36 @@ impl<const AVX512: usize, const AVX2: usize, const SSE2: usize, const PORTABLE: 
         target_feature = "sse2"
     )))]
     type Baseline = Wide<f64, PORTABLE>;
+}
+
+/// How many registers a table's cast keeps live, as far as the choice of
+/// register groups goes: a kernel names its groups for a [`LeanCast`]
+/// (the built-in tables' closed-form casts) and for a [`BulkyCast`] (a
+/// table built from segments, whose cast carries the nearest candidate so
+/// far through a loop over its walls), and the table picks one
+/// ([`Geom::Footprint`](crate::geom::Geom::Footprint)).
+///
+/// Like the group counts themselves, the choice never changes a result.
+pub(crate) trait Footprint {
+    /// `Lean` or `Bulky`, whichever this footprint is.
+    type Pick<Lean: PerIsa, Bulky: PerIsa>: PerIsa;
+}
+
+/// The footprint of a closed-form cast (circle, rectangle, stadium, Sinai).
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum LeanCast {}
+
+/// The footprint of a cast that loops over walls (tables built from
+/// segments): on AVX2's 16 registers it leaves room for fewer groups.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum BulkyCast {}
+
+impl Footprint for LeanCast {
+    type Pick<Lean: PerIsa, Bulky: PerIsa> = Lean;
+}
+
+impl Footprint for BulkyCast {
+    type Pick<Lean: PerIsa, Bulky: PerIsa> = Bulky;
 }
 
 #[cfg(test)]
