@@ -236,8 +236,8 @@ impl Kernel for FiniteDifference {
     type Out = Stretch;
     /// Registers per group: AVX-512 3, AVX2 4, SSE2 4, portable `f64` 4.
     type Groups = Groups<3, 4, 4, 4>;
-    /// Two AVX2 registers per group instead of four.
-    type BulkyGroups = Groups<3, 2, 4, 4>;
+    /// Two AVX2 and two SSE2 registers per group instead of four.
+    type BulkyGroups = Groups<3, 2, 2, 4>;
 
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(
@@ -323,8 +323,8 @@ impl Kernel for Tangent {
     type Out = Stretch;
     /// Registers per group: AVX-512 3, AVX2 4, SSE2 4, portable `f64` 4.
     type Groups = Groups<3, 4, 4, 4>;
-    /// Two AVX2 registers per group instead of four.
-    type BulkyGroups = Groups<3, 2, 4, 4>;
+    /// Two AVX2 and two SSE2 registers per group instead of four.
+    type BulkyGroups = Groups<3, 2, 2, 4>;
 
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(
@@ -394,8 +394,9 @@ impl Kernel for Spectrum {
     type Out = SpectrumStretch;
     /// Registers per group: AVX-512 2, AVX2 3, SSE2 4, portable `f64` 2.
     type Groups = Groups<2, 3, 4, 2>;
-    /// Two AVX2 registers per group instead of three.
-    type BulkyGroups = Groups<2, 2, 4, 2>;
+    /// Two AVX2 registers per group instead of three, two SSE2 instead of
+    /// four.
+    type BulkyGroups = Groups<2, 2, 2, 2>;
 
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(

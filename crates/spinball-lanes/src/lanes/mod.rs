@@ -406,7 +406,8 @@ pub(crate) trait Footprint {
 pub(crate) enum LeanCast {}
 
 /// The footprint of a cast that loops over walls (tables built from
-/// segments): on AVX2's 16 registers it leaves room for fewer groups.
+/// segments): in the 16 registers of AVX2 and SSE2 it leaves room for
+/// fewer groups.
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum BulkyCast {}
 
