@@ -145,7 +145,7 @@ impl Kernel for Plain {
     /// `f64` 2, in two streams.
     type Groups = Groups<3, 2, 2, 2>;
     /// As on the built-in tables.
-    type BulkyGroups = Groups<3, 2, 2, 2>;
+    type BulkyGroups = <Self as Kernel>::Groups;
     const STREAMS: usize = 2;
 
     #[inline(always)]
