@@ -264,10 +264,13 @@ impl Kernel for FiniteDifference {
             // wait on the reference's division in program order.
             let found_r = r.search(g);
             let found_s = s.search(g);
-            let t = collide(law, &mut r, g.land(found_r), shell).hit.time;
+            // The two usually meet the same wall, whose constants a table
+            // may then fetch once.
+            let (hit_r, hit_s) = g.land_both(found_r, found_s);
+            let t = collide(law, &mut r, hit_r, shell).hit.time;
             zero_run.watch(t);
             time = time + t;
-            collide(law, &mut s, g.land(found_s), Shell::Own);
+            collide(law, &mut s, hit_s, Shell::Own);
             let zr = r.coords();
             let zs = s.coords();
             let d: [L; 5] = five(|c| zs[c] - zr[c]);

@@ -82,6 +82,18 @@ pub(crate) trait Geom: Copy + Send + Sync {
     fn search<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> Self::Found<L>;
     /// The second half: the contact on the wall found and its normal.
     fn land<L: Lanes>(&self, found: Self::Found<L>) -> LaneHit<L>;
+    /// Both landings of two searches whose walls are usually the same (a
+    /// finite-difference reference and its shadow): bitwise
+    /// `(self.land(a), self.land(b))`. A table that fetches a wall's
+    /// constants by its id fetches them once when every lane's walls agree.
+    #[inline(always)]
+    fn land_both<L: Lanes>(
+        &self,
+        a: Self::Found<L>,
+        b: Self::Found<L>,
+    ) -> (LaneHit<L>, LaneHit<L>) {
+        (self.land(a), self.land(b))
+    }
     /// The next wall hit from `(x, y)` along `(vx, vy)`, lane by lane.
     #[inline(always)]
     fn cast<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> LaneHit<L> {

@@ -19,6 +19,9 @@
 //! radius, orientation, curvature of an arc) are fetched by that id from
 //! [`Palette`]s once, for the landing, rather than carried through every
 //! comparison (which would keep a dozen more registers live per lane group).
+//! A finite-difference shadow, which meets its reference's wall in all but
+//! the rarest steps, reuses the reference's fetch when every lane's ids
+//! agree ([`Geom::land_both`]).
 //!
 //! The flat walls' forms (alone, paired with their opposite, along an axis)
 //! and the search for the earliest of them are in
@@ -219,40 +222,85 @@ fn clamp<L: Lanes>(x: L, lo: L, hi: L) -> L {
     L::select(x.gt(hi), hi, x)
 }
 
-/// Wall `wall`'s origin (a flat wall's start, an arc's centre) and the
-/// ball's offset from it after flying for `time`, `(origin − o) + v·time`,
-/// as `LineSegment::land` and `ArcSegment::land` compute it.
+/// A wall's constants for its landing, fetched by its id for every lane:
+/// its origin, a flat wall's direction and length, an arc's radius, its
+/// reciprocal, its normal's sign and its curvature (the other kind's read
+/// 0, or 1 where an arc's radius is skipped).
+#[derive(Clone, Copy, Debug)]
+struct Fetched<L: Lanes> {
+    ox: L,
+    oy: L,
+    dx: L,
+    dy: L,
+    length: L,
+    r: L,
+    inv_r: L,
+    sign: L,
+    curvature: L,
+}
+
+impl Landing {
+    /// The constants of wall `wall`, lane by lane. A table without arcs
+    /// (`CURVED` false) fetches only a flat wall's; a table whose arcs all
+    /// have radius 1 (`UNIT`) skips the radius, and takes the normal's sign
+    /// from the curvature, which is then `±1`, the sign itself, exactly.
+    #[inline(always)]
+    fn fetch<L: Lanes, const CURVED: bool, const UNIT: bool>(&self, wall: L) -> Fetched<L> {
+        let (zero, one) = (L::splat(0.0), L::splat(1.0));
+        let curvature = if CURVED {
+            L::lookup(&self.curvature, wall)
+        } else {
+            zero
+        };
+        let round = CURVED && !UNIT;
+        Fetched {
+            ox: L::lookup(&self.ox, wall),
+            oy: L::lookup(&self.oy, wall),
+            dx: L::lookup(&self.dx, wall),
+            dy: L::lookup(&self.dy, wall),
+            length: L::lookup(&self.length, wall),
+            r: if round { L::lookup(&self.r, wall) } else { one },
+            inv_r: if round {
+                L::lookup(&self.inv_r, wall)
+            } else {
+                one
+            },
+            sign: if round {
+                L::lookup(&self.sign, wall)
+            } else {
+                curvature
+            },
+            curvature,
+        }
+    }
+}
+
+/// The ball's offset from wall `k`'s origin (a flat wall's start, an arc's
+/// centre) after flying for `time`, `(origin − o) + v·time`, as
+/// `LineSegment::land` and `ArcSegment::land` compute it.
 #[inline(always)]
-fn offset<L: Lanes>(k: &Landing, ray: &Ray<L>, time: L, wall: L) -> (L, L, L, L) {
-    let (ox, oy) = (L::lookup(&k.ox, wall), L::lookup(&k.oy, wall));
+fn offset<L: Lanes>(k: &Fetched<L>, ray: &Ray<L>, time: L) -> (L, L) {
     (
-        ox,
-        oy,
-        (ray.x - ox) + ray.vx * time,
-        (ray.y - oy) + ray.vy * time,
+        (ray.x - k.ox) + ray.vx * time,
+        (ray.y - k.oy) + ray.vy * time,
     )
 }
 
-/// `LineSegment::land` of flat wall `wall` from the ball's offset `q`
-/// from its start `o`: the contact and the normal.
+/// `LineSegment::land` of flat wall `k` from the ball's offset `q` from
+/// its start: the contact and the normal.
 #[inline(always)]
-fn flat_contact<L: Lanes>(k: &Landing, o: (L, L), q: (L, L), wall: L) -> (L, L, L, L) {
-    let (dx, dy) = (L::lookup(&k.dx, wall), L::lookup(&k.dy, wall));
-    let along = clamp(
-        q.0 * dx + q.1 * dy,
-        L::splat(0.0),
-        L::lookup(&k.length, wall),
-    );
+fn flat_contact<L: Lanes>(k: &Fetched<L>, q: (L, L)) -> (L, L, L, L) {
+    let along = clamp(q.0 * k.dx + q.1 * k.dy, L::splat(0.0), k.length);
     // The normal is the direction's left perpendicular, exactly.
-    (o.0 + dx * along, o.1 + dy * along, -dy, dx)
+    (k.ox + k.dx * along, k.oy + k.dy * along, -k.dy, k.dx)
 }
 
-/// `LineSegment::land` of flat wall `wall` after flying for `time` (the
-/// one division), as a hit: the landing of a table without arcs.
+/// `LineSegment::land` of flat wall `k` (id `wall`) after flying for
+/// `time` (the one division), as a hit: the landing of a table without
+/// arcs.
 #[inline(always)]
-fn land_flat<L: Lanes>(k: &Landing, ray: &Ray<L>, time: L, wall: L) -> LaneHit<L> {
-    let (ox, oy, qx, qy) = offset(k, ray, time, wall);
-    let (px, py, nx, ny) = flat_contact(k, (ox, oy), (qx, qy), wall);
+fn land_flat<L: Lanes>(k: &Fetched<L>, ray: &Ray<L>, time: L, wall: L) -> LaneHit<L> {
+    let (px, py, nx, ny) = flat_contact(k, offset(k, ray, time));
     LaneHit {
         time,
         px,
@@ -272,36 +320,30 @@ struct Nearest<L: Lanes> {
     id: L,
 }
 
-/// The landing on wall `wall` after flying for `time`, as a hit:
+/// The landing on wall `k` (id `wall`) after flying for `time`, as a hit:
 /// `ArcSegment::land` in the lanes of `arc_wins`, `LineSegment::land` in
-/// the others, sharing the lookup of the origin and the offset from it.
-/// The exact normalisation of an arc contact off the circle is computed
-/// only if a lane of `arc_wins` has one.
+/// the others, sharing the origin and the offset from it. The exact
+/// normalisation of an arc contact off the circle is computed only if a
+/// lane of `arc_wins` has one.
 #[inline(always)]
 fn land<L: Lanes, const UNIT: bool>(
-    k: &Landing,
+    k: &Fetched<L>,
     ray: &Ray<L>,
     time: L,
     wall: L,
     arc_wins: L::Mask,
 ) -> LaneHit<L> {
-    let (ox, oy, qx, qy) = offset(k, ray, time, wall);
-    let (fx, fy, fnx, fny) = flat_contact(k, (ox, oy), (qx, qy), wall);
-    let (r, inv_r) = if UNIT {
-        (L::splat(1.0), L::splat(1.0))
-    } else {
-        (L::lookup(&k.r, wall), L::lookup(&k.inv_r, wall))
-    };
-    let (px, py, radx, rady) = contact::<L, UNIT>(ox, oy, qx, qy, r, inv_r, arc_wins);
-    let sign = L::lookup(&k.sign, wall);
+    let (qx, qy) = offset(k, ray, time);
+    let (fx, fy, fnx, fny) = flat_contact(k, (qx, qy));
+    let (px, py, radx, rady) = contact::<L, UNIT>(k.ox, k.oy, qx, qy, k.r, k.inv_r, arc_wins);
     LaneHit {
         time,
         px: L::select(arc_wins, px, fx),
         py: L::select(arc_wins, py, fy),
-        nx: L::select(arc_wins, radx * sign, fnx),
-        ny: L::select(arc_wins, rady * sign, fny),
+        nx: L::select(arc_wins, radx * k.sign, fnx),
+        ny: L::select(arc_wins, rady * k.sign, fny),
         // 0 at a flat wall's id.
-        curvature: L::lookup(&k.curvature, wall),
+        curvature: k.curvature,
         wall,
     }
 }
@@ -420,16 +462,48 @@ impl<const CURVED: bool> Geom for Segments<'_, CURVED> {
 
     #[inline(always)]
     fn land<L: Lanes>(&self, f: Found<L>) -> LaneHit<L> {
-        if !CURVED {
-            return land_flat(self.landing, &f.ray, f.time, f.wall);
-        }
-        // Both landings fetch their constants by the winner's id (each kind's
-        // palettes hold zeros at the other kind's ids; those lanes are
-        // discarded).
-        if self.unit {
-            land::<L, true>(self.landing, &f.ray, f.time, f.wall, f.arc_wins)
+        self.land_fetched(&self.fetch(f.wall), f)
+    }
+
+    #[inline(always)]
+    fn land_both<L: Lanes>(&self, a: Found<L>, b: Found<L>) -> (LaneHit<L>, LaneHit<L>) {
+        let ka = self.fetch(a.wall);
+        // A finite-difference shadow meets its reference's wall in all but
+        // the rarest steps (at a corner, a junction): the same ids read the
+        // same constants, bitwise, so they are fetched once. A NaN id (no
+        // wall) compares unequal and is fetched on its own.
+        let kb = if b.wall.ne(a.wall).any() {
+            self.fetch(b.wall)
         } else {
-            land::<L, false>(self.landing, &f.ray, f.time, f.wall, f.arc_wins)
+            ka
+        };
+        (self.land_fetched(&ka, a), self.land_fetched(&kb, b))
+    }
+}
+
+impl<const CURVED: bool> Segments<'_, CURVED> {
+    /// The landing's constants of wall `wall` (each kind's palettes hold
+    /// zeros at the other kind's ids; those lanes are discarded).
+    #[inline(always)]
+    fn fetch<L: Lanes>(&self, wall: L) -> Fetched<L> {
+        if !CURVED {
+            self.landing.fetch::<L, false, false>(wall)
+        } else if self.unit {
+            self.landing.fetch::<L, true, true>(wall)
+        } else {
+            self.landing.fetch::<L, true, false>(wall)
+        }
+    }
+
+    /// The landing of `f` on the wall whose constants are `k`.
+    #[inline(always)]
+    fn land_fetched<L: Lanes>(&self, k: &Fetched<L>, f: Found<L>) -> LaneHit<L> {
+        if !CURVED {
+            land_flat(k, &f.ray, f.time, f.wall)
+        } else if self.unit {
+            land::<L, true>(k, &f.ray, f.time, f.wall, f.arc_wins)
+        } else {
+            land::<L, false>(k, &f.ray, f.time, f.wall, f.arc_wins)
         }
     }
 }
@@ -621,6 +695,89 @@ pub(crate) mod tests {
         assert_eq!(ids(&diamond), ["0+2", "1+3"]);
         // The base along the x axis; walls 1 and 2 share a normal.
         assert_eq!(ids(&split_triangle()), ["a0", "1", "2~", "3"]);
+    }
+
+    /// `Geom::land_both` against two `Geom::land`s, every field of every
+    /// lane bitwise, on `L` lanes: pairs of rays `1e-9` apart (a reference
+    /// and its shadow, nearly always one wall) and unrelated pairs (walls
+    /// differing in some lane). Returns how many pairs shared every wall
+    /// and how many did not.
+    fn land_both_is_two_landings<L: Lanes>(t: &SegmentTable) -> (usize, usize) {
+        let lanes = LaneSegments::new(t);
+        let g = lanes.view::<true>();
+        let mut rng = Pcg64::seed_from_u64(8);
+        let mut shared = (0, 0);
+        let load = |v: &[f64]| L::load(v);
+        for pair in 0..4_000 {
+            let mut a = [[0.0; 4]; crate::lanes::MAX_LANES];
+            let mut b = [[0.0; 4]; crate::lanes::MAX_LANES];
+            for j in 0..L::N {
+                let o = t.sample_interior(&mut rng, 1.0);
+                let v = DVec2::from_angle(rng.random::<f64>() * TAU);
+                a[j] = [o.x, o.y, v.x, v.y];
+                b[j] = if pair % 2 == 0 {
+                    [o.x + 1e-9, o.y - 1e-9, v.x, v.y + 1e-9]
+                } else {
+                    let o = t.sample_interior(&mut rng, 1.0);
+                    let v = DVec2::from_angle(rng.random::<f64>() * TAU);
+                    [o.x, o.y, v.x, v.y]
+                };
+            }
+            let column = |z: &[[f64; 4]], c: usize| {
+                load(&z[..L::N].iter().map(|r| r[c]).collect::<Vec<f64>>())
+            };
+            let search =
+                |z: &[[f64; 4]]| g.search(column(z, 0), column(z, 1), column(z, 2), column(z, 3));
+            let (fa, fb) = (search(&a), search(&b));
+            let (both_a, both_b) = g.land_both(fa, fb);
+            let (one_a, one_b) = (g.land(fa), g.land(fb));
+            let fields = |h: &LaneHit<L>| {
+                [h.time, h.px, h.py, h.nx, h.ny, h.curvature, h.wall].map(|x| {
+                    let mut v = vec![0.0; L::N];
+                    x.store(&mut v);
+                    v.iter().map(|x| x.to_bits()).collect::<Vec<u64>>()
+                })
+            };
+            assert_eq!(fields(&both_a), fields(&one_a), "pair {pair}, first");
+            assert_eq!(fields(&both_b), fields(&one_b), "pair {pair}, second");
+            if fb.wall.ne(fa.wall).any() {
+                shared.1 += 1;
+            } else {
+                shared.0 += 1;
+            }
+        }
+        shared
+    }
+
+    #[test]
+    fn landing_two_searches_at_once_is_landing_each() {
+        let tables = [
+            stadium(1.0),
+            mushroom(1.0, 0.3, 1.0),
+            mushroom(1.5, 0.4, 0.7),
+        ];
+        for t in &tables {
+            let mut runs = vec![land_both_is_two_landings::<f64>(t)];
+            runs.push(land_both_is_two_landings::<
+                <crate::lanes::Groups<1, 1, 1, 1> as crate::lanes::PerIsa>::Baseline,
+            >(t));
+            #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+            {
+                if crate::isa::Avx2Cpu::detect().is_some() {
+                    runs.push(land_both_is_two_landings::<crate::lanes::Avx2>(t));
+                }
+                if crate::isa::Avx512Cpu::detect().is_some() {
+                    runs.push(land_both_is_two_landings::<crate::lanes::Avx512>(t));
+                }
+            }
+            // Both ways through `land_both` were taken on every level.
+            for (same, differing) in runs {
+                assert!(
+                    same > 100 && differing > 100,
+                    "{same} shared, {differing} not"
+                );
+            }
+        }
     }
 
     #[test]
