@@ -16,9 +16,10 @@
 //!
 //! The search keeps only the nearest wall's flight time and id per lane;
 //! the winner's constants (start, direction, length of a flat wall; centre,
-//! radius, orientation, curvature of an arc) are fetched by that id from
-//! [`Palette`]s once, for the landing, rather than carried through every
-//! comparison (which would keep a dozen more registers live per lane group).
+//! radius, curvature of an arc) are fetched together by that id, as one
+//! row of [`Records`], once, for the landing, rather than carried through
+//! every comparison (which would keep a dozen more registers live per lane
+//! group).
 //! A finite-difference shadow, which meets its reference's wall in all but
 //! the rarest steps, reuses the reference's fetch when every lane's ids
 //! agree ([`Geom::land_both`]).
@@ -32,12 +33,12 @@
 
 use std::f64::consts::TAU;
 
-use spinball_geometry::{ArcSegment, DVec2, LineSegment, Segment, SegmentTable};
+use spinball_geometry::{ArcSegment, DVec2, Segment, SegmentTable};
 
 use super::flat_walls::{Step, earliest, steps};
 use super::round::{Ray, Round, concave_root, contact, convex_root};
 use super::{Geom, LaneHit};
-use crate::lanes::{BulkyCast, Lanes, MaskOps, Palette, cmp};
+use crate::lanes::{BulkyCast, Lanes, MaskOps, Records, cmp};
 
 /// An arc's constants, as `ArcSegment::approach` and `land` use them.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -87,57 +88,32 @@ impl Curve {
     }
 }
 
-/// What landing on a wall needs, by wall id: its origin (a flat wall's
-/// start, an arc's centre: the ball's offset from it after the flight is
-/// computed once for both kinds), a flat wall's direction and length, an
-/// arc's radius and its reciprocal, the sign of its inward normal against
-/// the radial direction, and its curvature. A wall's entries in the other
-/// kind's palettes are 0.
+/// What landing on a wall needs, by wall id, as the columns of one
+/// [`Records`]: its origin (a flat wall's start, an arc's centre: the
+/// ball's offset from it after the flight is computed once for both kinds),
+/// a flat wall's direction and length, an arc's curvature, radius and the
+/// radius's reciprocal. A wall's entries in the other kind's columns are 0.
 #[derive(Clone, Debug, PartialEq)]
-struct Landing {
-    ox: Palette,
-    oy: Palette,
-    dx: Palette,
-    dy: Palette,
-    length: Palette,
-    r: Palette,
-    inv_r: Palette,
-    sign: Palette,
-    curvature: Palette,
-}
+struct Landing(Records);
 
 impl Landing {
     fn new(walls: &[Segment]) -> Self {
-        let of = |f: &dyn Fn(&Segment) -> f64| Palette::new(walls.iter().map(f));
-        let line = |f: fn(&LineSegment) -> f64| {
-            of(&move |w: &Segment| match w {
-                Segment::Line(l) => f(l),
-                Segment::Arc(_) => 0.0,
-            })
-        };
-        let arc = |f: fn(&ArcSegment) -> f64| {
-            of(&move |w: &Segment| match w {
-                Segment::Arc(a) => f(a),
-                Segment::Line(_) => 0.0,
-            })
-        };
-        let origin = |w: &Segment| match w {
-            Segment::Line(l) => l.start(),
-            Segment::Arc(a) => a.center(),
-        };
-        Landing {
-            ox: of(&|w: &Segment| origin(w).x),
-            oy: of(&|w: &Segment| origin(w).y),
-            dx: line(|l| l.direction().x),
-            dy: line(|l| l.direction().y),
-            length: line(|l| l.length()),
-            r: arc(|a| a.radius()),
-            inv_r: arc(|a| Round::new(a.radius()).inv_r),
-            // The inward normal's sign against the radial direction
-            // (multiplying by it negates exactly).
-            sign: arc(|a| if a.is_concave() { -1.0 } else { 1.0 }),
-            curvature: arc(|a| a.curvature()),
-        }
+        Landing(Records::new(
+            walls
+                .iter()
+                .map(|w| match w {
+                    Segment::Line(l) => {
+                        let (o, d) = (l.start(), l.direction());
+                        [o.x, o.y, d.x, d.y, l.length(), 0.0, 0.0, 0.0]
+                    }
+                    Segment::Arc(a) => {
+                        let (c, r) = (a.center(), a.radius());
+                        let inv_r = Round::new(r).inv_r;
+                        [c.x, c.y, 0.0, 0.0, 0.0, a.curvature(), r, inv_r]
+                    }
+                })
+                .collect(),
+        ))
     }
 }
 
@@ -225,7 +201,7 @@ fn clamp<L: Lanes>(x: L, lo: L, hi: L) -> L {
 /// A wall's constants for its landing, fetched by its id for every lane:
 /// its origin, a flat wall's direction and length, an arc's radius, its
 /// reciprocal, its normal's sign and its curvature (the other kind's read
-/// 0, or 1 where an arc's radius is skipped).
+/// 0).
 #[derive(Clone, Copy, Debug)]
 struct Fetched<L: Lanes> {
     ox: L,
@@ -240,36 +216,21 @@ struct Fetched<L: Lanes> {
 }
 
 impl Landing {
-    /// The constants of wall `wall`, lane by lane. A table without arcs
-    /// (`CURVED` false) fetches only a flat wall's; a table whose arcs all
-    /// have radius 1 (`UNIT`) skips the radius, and takes the normal's sign
-    /// from the curvature, which is then `±1`, the sign itself, exactly.
+    /// The constants of wall `wall`, lane by lane. The normal's sign
+    /// against the radial direction is that of the curvature (an arc's is
+    /// never 0; a flat wall's lanes are discarded).
     #[inline(always)]
-    fn fetch<L: Lanes, const CURVED: bool, const UNIT: bool>(&self, wall: L) -> Fetched<L> {
-        let (zero, one) = (L::splat(0.0), L::splat(1.0));
-        let curvature = if CURVED {
-            L::lookup(&self.curvature, wall)
-        } else {
-            zero
-        };
-        let round = CURVED && !UNIT;
+    fn fetch<L: Lanes>(&self, wall: L) -> Fetched<L> {
+        let [ox, oy, dx, dy, length, curvature, r, inv_r] = L::fetch(&self.0, wall);
         Fetched {
-            ox: L::lookup(&self.ox, wall),
-            oy: L::lookup(&self.oy, wall),
-            dx: L::lookup(&self.dx, wall),
-            dy: L::lookup(&self.dy, wall),
-            length: L::lookup(&self.length, wall),
-            r: if round { L::lookup(&self.r, wall) } else { one },
-            inv_r: if round {
-                L::lookup(&self.inv_r, wall)
-            } else {
-                one
-            },
-            sign: if round {
-                L::lookup(&self.sign, wall)
-            } else {
-                curvature
-            },
+            ox,
+            oy,
+            dx,
+            dy,
+            length,
+            r,
+            inv_r,
+            sign: L::select(curvature.lt(L::splat(0.0)), L::splat(-1.0), L::splat(1.0)),
             curvature,
         }
     }
@@ -486,13 +447,7 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
     /// zeros at the other kind's ids; those lanes are discarded).
     #[inline(always)]
     fn fetch<L: Lanes>(&self, wall: L) -> Fetched<L> {
-        if !CURVED {
-            self.landing.fetch::<L, false, false>(wall)
-        } else if self.unit {
-            self.landing.fetch::<L, true, true>(wall)
-        } else {
-            self.landing.fetch::<L, true, false>(wall)
-        }
+        self.landing.fetch(wall)
     }
 
     /// The landing of `f` on the wall whose constants are `k`.
@@ -515,7 +470,7 @@ pub(crate) mod tests {
 
     use rand::{Rng, SeedableRng};
     use rand_pcg::Pcg64;
-    use spinball_geometry::{Boundary, DVec2};
+    use spinball_geometry::{Boundary, DVec2, LineSegment};
 
     use super::super::agree::{check, check_n, d};
     use super::*;

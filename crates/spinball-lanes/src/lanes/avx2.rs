@@ -11,7 +11,7 @@ use std::arch::x86::*;
 #[cfg(target_arch = "x86_64")]
 use std::arch::x86_64::*;
 
-use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS, Palette};
+use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS, Palette, Records};
 use crate::isa::Avx2Cpu;
 
 /// Four lanes in an AVX2 register.
@@ -224,5 +224,52 @@ impl Lanes for Avx2 {
             let k = _mm_min_epu32(k, _mm_set1_epi32(t.len() as i32 - 1));
             _mm256_i32gather_pd::<8>(t.as_ptr(), k)
         })
+    }
+    #[inline(always)]
+    fn fetch(r: &Records, index: Self) -> [Self; 8] {
+        let rows = r.rows();
+        // Each lane's index, clamped as `lookup` clamps it (the rows are as
+        // many as a column's entries).
+        // SAFETY: AVX2 and SSE4.1 intrinsics (AVX2 implies SSE4.1); code
+        // with `Avx2` lanes runs only where AVX2 was detected (the type's
+        // invariant).
+        let k = unsafe {
+            let k = _mm256_cvttpd_epi32(index.0);
+            _mm_min_epu32(k, _mm_set1_epi32(rows.len() as i32 - 1))
+        };
+        let lane = |i: i32| -> &[f64; 8] {
+            // SAFETY: SSE4.1 intrinsics, as above (`rows[k]` is then
+            // bounds-checked).
+            let k = unsafe {
+                match i {
+                    0 => _mm_extract_epi32::<0>(k),
+                    1 => _mm_extract_epi32::<1>(k),
+                    2 => _mm_extract_epi32::<2>(k),
+                    _ => _mm_extract_epi32::<3>(k),
+                }
+            };
+            &rows[k as u32 as usize]
+        };
+        let (a, b, c, d) = (lane(0), lane(1), lane(2), lane(3));
+        // Columns `2j` and `2j + 1`: lanes 0 and 2 of the pair in one
+        // register, lanes 1 and 3 in another, interleaved.
+        let pair = |j: usize| -> (Avx2, Avx2) {
+            // SAFETY: AVX intrinsics (the type's invariant); each 16-byte
+            // load reads entries `2j, 2j + 1` (`j < 4`) of a row of 8.
+            unsafe {
+                let two = |row: &[f64; 8]| _mm_loadu_pd(row[2 * j..2 * j + 2].as_ptr());
+                let ac = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(two(a)), two(c));
+                let bd = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(two(b)), two(d));
+                (
+                    Avx2(_mm256_unpacklo_pd(ac, bd)),
+                    Avx2(_mm256_unpackhi_pd(ac, bd)),
+                )
+            }
+        };
+        let (c0, c1) = pair(0);
+        let (c2, c3) = pair(1);
+        let (c4, c5) = pair(2);
+        let (c6, c7) = pair(3);
+        [c0, c1, c2, c3, c4, c5, c6, c7]
     }
 }

@@ -165,6 +165,24 @@ pub(crate) trait Lanes:
     /// and not its constants). AVX-512 permutes a palette of 8 or 16
     /// entries within registers; the other levels gather.
     fn lookup(p: &Palette, index: Self) -> Self;
+    /// The eight constants of each lane's record in `r`: entry `c` of the
+    /// result is bitwise [`lookup`](Self::lookup)`(r.column(c), index)`
+    /// (a wall's landing constants fetched together by its id). AVX2 and
+    /// SSE2 load each lane's row and transpose; AVX-512 permutes each
+    /// column.
+    #[inline(always)]
+    fn fetch(r: &Records, index: Self) -> [Self; 8] {
+        [
+            Self::lookup(r.column(0), index),
+            Self::lookup(r.column(1), index),
+            Self::lookup(r.column(2), index),
+            Self::lookup(r.column(3), index),
+            Self::lookup(r.column(4), index),
+            Self::lookup(r.column(5), index),
+            Self::lookup(r.column(6), index),
+            Self::lookup(r.column(7), index),
+        ]
+    }
 
     /// Lanes that are neither NaN nor infinite.
     #[inline(always)]
@@ -233,6 +251,54 @@ impl Palette {
     pub fn get(&self, index: f64) -> f64 {
         // `as usize` saturates (NaN and negatives to 0).
         self.0[(index as usize).min(self.0.len() - 1)]
+    }
+}
+
+/// Eight constants per entry (a wall's, by its id) for [`Lanes::fetch`],
+/// kept twice: as rows, an entry's eight side by side, and as columns, one
+/// [`Palette`] per constant. Both are padded with zeros to the palettes'
+/// length, so that every level reads, for any index, the entry its
+/// [`Lanes::lookup`] reads.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Records {
+    rows: Vec<[f64; 8]>,
+    columns: [Palette; 8],
+}
+
+impl Records {
+    /// The entries `rows`, in order.
+    pub fn new(rows: Vec<[f64; 8]>) -> Self {
+        let column = |c: usize| Palette::new(rows.iter().map(|r| r[c]));
+        let columns = [
+            column(0),
+            column(1),
+            column(2),
+            column(3),
+            column(4),
+            column(5),
+            column(6),
+            column(7),
+        ];
+        let mut rows = rows;
+        rows.resize(columns[0].entries().len(), [0.0; 8]);
+        Records { rows, columns }
+    }
+
+    /// The rows, padding included (as many as a column's entries).
+    pub fn rows(&self) -> &[[f64; 8]] {
+        &self.rows
+    }
+
+    /// The row at `index`, read as [`Palette::get`] reads an entry.
+    #[inline(always)]
+    pub fn row(&self, index: f64) -> &[f64; 8] {
+        // `as usize` saturates (NaN and negatives to 0).
+        &self.rows[(index as usize).min(self.rows.len() - 1)]
+    }
+
+    /// Column `c` (`c < 8`).
+    pub fn column(&self, c: usize) -> &Palette {
+        &self.columns[c]
     }
 }
 
@@ -451,6 +517,70 @@ mod tests {
                         index[j]
                     );
                 }
+            }
+        }
+    }
+
+    /// `L::fetch` reads, bit for bit, what `L::lookup` reads from each
+    /// column, for every index in every lane (and a NaN index); `row` reads
+    /// what `Palette::get` reads.
+    fn fetch_reads_each_column<L: Lanes>() {
+        for walls in [1, 5, 8, 9, 16, 17] {
+            let rows: Vec<[f64; 8]> = (0..walls)
+                .map(|i| {
+                    std::array::from_fn(|c| {
+                        (i * 8 + c) as f64 * if c % 2 == 0 { 1.5 } else { -0.25 }
+                    })
+                })
+                .collect();
+            let r = Records::new(rows);
+            let n = r.rows().len();
+            for first in 0..=n {
+                // Lane j reads entry (first + 5 j) mod n, and a NaN at `n`.
+                let index: Vec<f64> = (0..L::N)
+                    .map(|j| {
+                        if first == n && j == 0 {
+                            f64::NAN
+                        } else {
+                            ((first + 5 * j) % n) as f64
+                        }
+                    })
+                    .collect();
+                for &i in &index {
+                    for c in 0..8 {
+                        assert_eq!(r.row(i)[c].to_bits(), r.column(c).get(i).to_bits());
+                    }
+                }
+                let k = L::load(&index);
+                let got = L::fetch(&r, k);
+                for (c, g) in got.iter().enumerate() {
+                    let (mut a, mut b) = (vec![0.0; L::N], vec![0.0; L::N]);
+                    g.store(&mut a);
+                    L::lookup(r.column(c), k).store(&mut b);
+                    let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<u64>>();
+                    assert_eq!(
+                        bits(&a),
+                        bits(&b),
+                        "{walls} walls, column {c}, indices {index:?}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn fetch_reads_each_column_on_every_level() {
+        fetch_reads_each_column::<f64>();
+        fetch_reads_each_column::<<Groups<1, 1, 1, 1> as PerIsa>::Baseline>();
+        fetch_reads_each_column::<<Groups<2, 2, 2, 2> as PerIsa>::Baseline>();
+        #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+        {
+            if Avx2Cpu::detect().is_some() {
+                fetch_reads_each_column::<Avx2>();
+                fetch_reads_each_column::<Wide<Avx2, 2>>();
+            }
+            if Avx512Cpu::detect().is_some() {
+                fetch_reads_each_column::<Avx512>();
             }
         }
     }

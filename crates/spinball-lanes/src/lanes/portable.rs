@@ -9,7 +9,7 @@
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS, Palette};
+use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS, Palette, Records};
 use crate::isa::Baseline;
 
 impl MaskOps for bool {
@@ -268,6 +268,20 @@ impl<L: Lanes, const K: usize> Lanes for Wide<L, K> {
     #[inline(always)]
     fn lookup(p: &Palette, index: Self) -> Self {
         Wide(each!(K, |i| L::lookup(p, index.0[i])))
+    }
+    #[inline(always)]
+    fn fetch(r: &Records, index: Self) -> [Self; 8] {
+        let each = each!(K, |i| L::fetch(r, index.0[i]));
+        [
+            Wide(each!(K, |i| each[i][0])),
+            Wide(each!(K, |i| each[i][1])),
+            Wide(each!(K, |i| each[i][2])),
+            Wide(each!(K, |i| each[i][3])),
+            Wide(each!(K, |i| each[i][4])),
+            Wide(each!(K, |i| each[i][5])),
+            Wide(each!(K, |i| each[i][6])),
+            Wide(each!(K, |i| each[i][7])),
+        ]
     }
 }
 

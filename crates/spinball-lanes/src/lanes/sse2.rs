@@ -11,7 +11,7 @@ use std::arch::x86::*;
 #[cfg(target_arch = "x86_64")]
 use std::arch::x86_64::*;
 
-use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS, Palette};
+use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS, Palette, Records};
 use crate::isa::Baseline;
 
 /// Two lanes in an SSE2 register.
@@ -232,5 +232,28 @@ impl Lanes for Sse2 {
         let mut i = [0.0; 2];
         index.store(&mut i);
         Self::load(&[p.get(i[0]), p.get(i[1])])
+    }
+    #[inline(always)]
+    fn fetch(r: &Records, index: Self) -> [Self; 8] {
+        let mut i = [0.0; 2];
+        index.store(&mut i);
+        let (a, b) = (r.row(i[0]), r.row(i[1]));
+        // Columns `2j` and `2j + 1` from the two rows' entries `2j, 2j + 1`.
+        let pair = |j: usize| -> (Sse2, Sse2) {
+            let (x, y) = (Self::load(&a[2 * j..]), Self::load(&b[2 * j..]));
+            // SAFETY: SSE2 intrinsics; SSE2 is part of the target (the
+            // module's cfg), so every CPU that runs this binary has it.
+            unsafe {
+                (
+                    Sse2(_mm_unpacklo_pd(x.0, y.0)),
+                    Sse2(_mm_unpackhi_pd(x.0, y.0)),
+                )
+            }
+        };
+        let (c0, c1) = pair(0);
+        let (c2, c3) = pair(1);
+        let (c4, c5) = pair(2);
+        let (c6, c7) = pair(3);
+        [c0, c1, c2, c3, c4, c5, c6, c7]
     }
 }
