@@ -216,9 +216,10 @@ struct Fetched<L: Lanes> {
 }
 
 impl Landing {
-    /// The constants of wall `wall`, lane by lane. The normal's sign
-    /// against the radial direction is that of the curvature (an arc's is
-    /// never 0; a flat wall's lanes are discarded).
+    /// The constants of wall `wall`, lane by lane (each kind's columns hold
+    /// zeros at the other kind's ids; those lanes are discarded). The
+    /// normal's sign against the radial direction is that of the curvature
+    /// (an arc's is never 0).
     #[inline(always)]
     fn fetch<L: Lanes>(&self, wall: L) -> Fetched<L> {
         let [ox, oy, dx, dy, length, curvature, r, inv_r] = L::fetch(&self.0, wall);
@@ -423,18 +424,18 @@ impl<const CURVED: bool> Geom for Segments<'_, CURVED> {
 
     #[inline(always)]
     fn land<L: Lanes>(&self, f: Found<L>) -> LaneHit<L> {
-        self.land_fetched(&self.fetch(f.wall), f)
+        self.land_fetched(&self.landing.fetch(f.wall), f)
     }
 
     #[inline(always)]
     fn land_both<L: Lanes>(&self, a: Found<L>, b: Found<L>) -> (LaneHit<L>, LaneHit<L>) {
-        let ka = self.fetch(a.wall);
+        let ka = self.landing.fetch(a.wall);
         // A finite-difference shadow meets its reference's wall in all but
         // the rarest steps (at a corner, a junction): the same ids read the
         // same constants, bitwise, so they are fetched once. A NaN id (no
         // wall) compares unequal and is fetched on its own.
         let kb = if b.wall.ne(a.wall).any() {
-            self.fetch(b.wall)
+            self.landing.fetch(b.wall)
         } else {
             ka
         };
@@ -443,13 +444,6 @@ impl<const CURVED: bool> Geom for Segments<'_, CURVED> {
 }
 
 impl<const CURVED: bool> Segments<'_, CURVED> {
-    /// The landing's constants of wall `wall` (each kind's palettes hold
-    /// zeros at the other kind's ids; those lanes are discarded).
-    #[inline(always)]
-    fn fetch<L: Lanes>(&self, wall: L) -> Fetched<L> {
-        self.landing.fetch(wall)
-    }
-
     /// The landing of `f` on the wall whose constants are `k`.
     #[inline(always)]
     fn land_fetched<L: Lanes>(&self, k: &Fetched<L>, f: Found<L>) -> LaneHit<L> {
