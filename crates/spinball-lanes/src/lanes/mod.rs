@@ -94,7 +94,7 @@ pub(crate) trait Lanes:
     /// `u64` lanes.
     type Bits: BitsOps;
     /// The proof (a zero-sized type of [`isa`](crate::isa)) that the CPU can
-    /// run this type's instructions: [`Baseline`](crate::isa::Baseline) for
+    /// run this type's instructions: [`Baseline`] for
     /// `f64` and SSE2, [`Avx2Cpu`] and [`Avx512Cpu`] for the x86 vector
     /// types. Kernels run only with a proof `C` such that
     /// `Needs: `[`ProvenBy`]`<C>`.

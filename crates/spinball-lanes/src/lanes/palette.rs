@@ -1,12 +1,17 @@
 //! The constant tables lanes index by a wall's id: a [`Palette`] holds one
-//! constant per entry ([`Lanes::lookup`](super::Lanes::lookup)), [`Records`]
-//! eight per entry ([`Lanes::fetch`](super::Lanes::fetch)). Both are padded
-//! alike, so that every instruction-set level reads the same entry for the
-//! same index, which keeps the lane kernels bitwise equal to the scalar path.
+//! constant per entry ([`Lanes::lookup`]), [`Records`] eight per entry
+//! ([`Lanes::fetch`]). Both are padded alike, so that every instruction-set
+//! level reads the same entry for the same index, which keeps the lane
+//! kernels bitwise equal to the scalar path.
+//!
+//! [`Lanes::lookup`]: super::Lanes::lookup
+//! [`Lanes::fetch`]: super::Lanes::fetch
 
-/// A table of constants that lanes index ([`Lanes::lookup`](super::Lanes::lookup)), padded with
+/// A table of constants that lanes index ([`Lanes::lookup`]), padded with
 /// zeros to a multiple of 8 entries (at least 8), so that AVX-512 holds a
 /// table of up to 16 entries in one or two registers.
+///
+/// [`Lanes::lookup`]: super::Lanes::lookup
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Palette(Vec<f64>);
 
@@ -33,11 +38,14 @@ impl Palette {
     }
 }
 
-/// Eight constants per entry (a wall's, by its id) for [`Lanes::fetch`](super::Lanes::fetch),
+/// Eight constants per entry (a wall's, by its id) for [`Lanes::fetch`],
 /// kept twice: as rows, an entry's eight side by side, and as columns, one
 /// [`Palette`] per constant. Both are padded with zeros to the palettes'
 /// length, so that every level reads, for any index, the entry its
-/// [`Lanes::lookup`](super::Lanes::lookup) reads.
+/// [`Lanes::lookup`] reads.
+///
+/// [`Lanes::fetch`]: super::Lanes::fetch
+/// [`Lanes::lookup`]: super::Lanes::lookup
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Records {
     rows: Vec<[f64; 8]>,
