@@ -13,9 +13,12 @@
 //! collisions, a smoke test rather than a measurement.
 //!
 //! For each method (finite differences at δ0 = 1e-7, the default, and the
-//! exact tangent) it prints the median wall time per IC-step of `--repeat`
-//! runs on each engine and their ratio. The scalar engine runs a tenth of the
-//! initial conditions (the same first indices). `--table` takes a built-in
+//! exact tangent) it runs `--repeat` rounds, each one run per engine, the
+//! engines taking turns going first, and prints the median wall time per
+//! IC-step on each engine, their ratio, and the median of the rounds' own
+//! ratios (each round's two runs are seconds apart, so that figure is the
+//! one to trust on a host whose speed drifts). The scalar engine runs a
+//! tenth of the initial conditions (the same first indices). `--table` takes a built-in
 //! spec or a table file (`docs/tables/mushroom.toml`, see
 //! docs/TABLE_FILES.md); the engines run the concrete table type, so the
 //! scalar path is statically dispatched as in a typed ensemble.
@@ -52,7 +55,7 @@ const OPTIONS: [Opt; 5] = [
     Opt::value(
         "repeat",
         "R",
-        "runs per engine and method, median reported (default 3)",
+        "rounds, one run per engine and method each; medians reported (default 3)",
     ),
 ];
 
@@ -78,37 +81,52 @@ impl TableVisitor for &Bench {
     fn visit<B: Boundary + Clone + Send + Sync>(self, table: &B) -> Self::Output {
         let law = SpinLaw::extended(self.alpha)?;
         for method in [Method::FiniteDifference { delta0: 1e-7 }, Method::Tangent] {
-            let mut ns = [0.0; 2];
-            for (cost, (engine, ics)) in ns.iter_mut().zip([
+            let engines = [
                 (Engine::Lanes, self.ics),
                 (Engine::Scalar, self.scalar_ics()),
-            ]) {
-                let ensemble = Ensemble::new(table.clone(), law)
+            ];
+            let ensembles = engines.map(|(engine, ics)| {
+                Ensemble::new(table.clone(), law)
                     .with_seed(self.seed)
                     .with_ics(ics)
                     .with_collisions(self.collisions)
                     .with_method(method)
                     .with_threads(self.threads)
-                    .with_engine(engine);
-                let mut runs = Vec::with_capacity(self.repeat);
-                for _ in 0..self.repeat {
+                    .with_engine(engine)
+            });
+            // Wall ns per IC-step of each round, per engine.
+            let mut ns: [Vec<f64>; 2] = Default::default();
+            for round in 0..self.repeat {
+                // The engines alternate and take turns going first, so that
+                // a host whose speed drifts weighs on both alike.
+                for k in [round % 2, 1 - round % 2] {
+                    let (engine, ics) = engines[k];
                     let clock = Instant::now();
-                    let estimate = ensemble.run()?;
-                    runs.push(clock.elapsed().as_secs_f64());
+                    let estimate = ensembles[k].run()?;
+                    let wall = clock.elapsed().as_secs_f64();
                     if estimate.engine != engine {
                         return Err(format!("asked for {engine}, ran {}", estimate.engine).into());
                     }
+                    ns[k].push(wall / (ics as f64 * self.collisions as f64) * 1e9);
                 }
-                let wall = median(&runs).ok_or("no run")?;
-                *cost = wall / (ics as f64 * self.collisions as f64) * 1e9;
+            }
+            let mut cost = [0.0; 2];
+            for (k, (engine, _)) in engines.iter().enumerate() {
+                cost[k] = median(&ns[k]).ok_or("no run")?;
                 println!(
                     "{:<8} {:<7} {:9.3} ns/IC-step",
                     method.name(),
                     engine.name(),
-                    *cost
+                    cost[k]
                 );
             }
-            println!("{:<8} lanes ÷ scalar: {:.2}×", method.name(), ns[1] / ns[0]);
+            let paired: Vec<f64> = ns[1].iter().zip(&ns[0]).map(|(s, l)| s / l).collect();
+            println!(
+                "{:<8} lanes ÷ scalar: {:.2}× (median of the rounds' own ratios: {:.2}×)",
+                method.name(),
+                cost[1] / cost[0],
+                median(&paired).ok_or("no run")?
+            );
         }
         Ok(())
     }
