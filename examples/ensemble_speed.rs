@@ -18,8 +18,8 @@
 //! IC-step on each engine, their ratio, and the median of the rounds' own
 //! ratios (each round's two runs are seconds apart, so that figure is the
 //! one to trust on a host whose speed drifts). The scalar engine runs a
-//! tenth of the initial conditions (the same first indices). `--table` takes a built-in
-//! spec or a table file (`docs/tables/mushroom.toml`, see
+//! tenth of the initial conditions (the same first indices). `--table`
+//! takes a built-in spec or a table file (`docs/tables/mushroom.toml`, see
 //! docs/TABLE_FILES.md); the engines run the concrete table type, so the
 //! scalar path is statically dispatched as in a typed ensemble.
 

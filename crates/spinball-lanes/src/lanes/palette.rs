@@ -55,17 +55,8 @@ pub(crate) struct Records {
 impl Records {
     /// The entries `rows`, in order.
     pub fn new(rows: Vec<[f64; 8]>) -> Self {
-        let column = |c: usize| Palette::new(rows.iter().map(|r| r[c]));
-        let columns = [
-            column(0),
-            column(1),
-            column(2),
-            column(3),
-            column(4),
-            column(5),
-            column(6),
-            column(7),
-        ];
+        let columns: [Palette; 8] =
+            std::array::from_fn(|c| Palette::new(rows.iter().map(|r| r[c])));
         let mut rows = rows;
         rows.resize(columns[0].entries().len(), [0.0; 8]);
         Records { rows, columns }
