@@ -60,7 +60,7 @@ impl ArcSegment {
         let from = DVec2::from_angle(start_angle);
         let to = DVec2::from_angle(start_angle + sweep);
         let mid = DVec2::from_angle(start_angle + 0.5 * sweep);
-        let chord = (to - from) * radius;
+        let chord = square_up((to - from) * radius);
         let side = chord.perp_dot((mid - from) * radius).signum();
         Ok(ArcSegment {
             center,
@@ -122,6 +122,27 @@ impl ArcSegment {
     /// Unit direction from the centre to the start point.
     pub fn start_direction(&self) -> DVec2 {
         self.from
+    }
+    /// The chord from the start point to the end point, as the test of
+    /// whether a contact lies on the arc uses it: a component within `4ε`
+    /// of the chord's length is exactly zero (an arc whose ends are
+    /// computed from `cos` and `sin` of angles such as `±π/2` and `π` has
+    /// its chord exactly along the axis the angles put it on).
+    #[must_use]
+    pub fn chord(&self) -> DVec2 {
+        self.chord
+    }
+    /// The side of the [`chord`](Self::chord) the arc lies on: `+1` if it
+    /// lies to the left of the chord's direction, `-1` if to the right.
+    #[must_use]
+    pub fn chord_side(&self) -> f64 {
+        self.side
+    }
+    /// Whether the arc is a full circle (a sweep within `1e-12` of `2π`):
+    /// it then covers every contact.
+    #[must_use]
+    pub fn is_full(&self) -> bool {
+        self.full
     }
 
     /// Whether a point on the circle lies on this arc (ends included, within
@@ -213,6 +234,17 @@ impl ArcSegment {
             (point, radial)
         }
     }
+}
+
+/// `chord` with a component that is rounding against the other (within
+/// `4ε` of the chord's length) set to exactly zero: the chord of an arc
+/// whose ends lie on a line along an axis is along that axis, not tilted by
+/// the rounding of `cos` and `sin` (which would cost every cast of it a
+/// product of the other component).
+fn square_up(chord: DVec2) -> DVec2 {
+    let tiny = 4.0 * f64::EPSILON * chord.length();
+    let snap = |c: f64| if c.abs() <= tiny { 0.0 } else { c };
+    DVec2::new(snap(chord.x), snap(chord.y))
 }
 
 /// Below this `|d|² − R²` a ball counts as on the circle of radius `r`

@@ -114,3 +114,36 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn chords_along_an_axis_are_exactly_along_it() {
+    // The stadium's caps, the mushroom's cap and a quarter circle: ends
+    // from `cos` and `sin` of multiples of π/2, whose rounding (about
+    // 1e-16) would tilt the chord off the axis.
+    let along_y = [
+        ArcSegment::new(d(1.0, 0.0), 1.0, -FRAC_PI_2, PI).unwrap(),
+        ArcSegment::new(d(-1.0, 0.0), 1.0, FRAC_PI_2, PI).unwrap(),
+        ArcSegment::new(DVec2::ZERO, 2.5, FRAC_PI_2, -PI).unwrap(),
+    ];
+    for a in &along_y {
+        assert_eq!(a.chord().x, 0.0, "{a:?}");
+        assert_eq!(a.chord().y.abs(), 2.0 * a.radius(), "{a:?}");
+    }
+    let cap = ArcSegment::new(DVec2::ZERO, 1.0, 0.0, PI).unwrap();
+    assert_eq!(cap.chord(), d(-2.0, 0.0));
+    // The cap lies to the right of its chord, which runs from +x to −x.
+    assert_eq!(cap.chord_side(), -1.0);
+    // Rounding is all that is taken off: a chord 1e-9 off the axis, and
+    // an oblique one, keep both components.
+    let tilted = ArcSegment::new(DVec2::ZERO, 1.0, 1e-9, PI).unwrap();
+    assert!(tilted.chord().y != 0.0 && tilted.chord().x < 0.0);
+    let quarter = ArcSegment::new(DVec2::ZERO, 1.0, 0.0, FRAC_PI_2).unwrap();
+    assert!((quarter.chord() - d(-1.0, 1.0)).length() < 1e-15);
+    assert!(!cap.is_full() && ArcSegment::full_circle(DVec2::ZERO, 1.0).unwrap().is_full());
+    // The contact test still lands on the right side of the snapped chord:
+    // straight up from the centre meets the cap at (0, 1), straight down
+    // does not.
+    let up = cap.approach(DVec2::ZERO, d(0.0, 1.0), SLACK).unwrap();
+    assert_eq!(up.dist / up.speed, 1.0);
+    assert_eq!(cap.approach(d(0.0, 0.5), d(0.0, -1.0), SLACK), None);
+}

@@ -11,7 +11,15 @@
 //!   the direction and the normal each have one component exactly zero, so
 //!   each of the cast's dot products is one product, in the ball's
 //!   coordinates across and along the wall ([`AxisRay`]; one form for both
-//!   orientations, so the kernels hold one more copy of the cast, not two).
+//!   orientations, so the kernels hold one more copy of the cast, not two);
+//! - two walls along an axis on one line, cast in one step that computes
+//!   what depends on the line alone once ([`Step::AxisLine`]).
+//!
+//! What one step shares with the next (`−(v·n)` and `v·dir`) is carried
+//! through the loop over the steps; anything more carried that way costs
+//! registers in every step of every table (measured: a shared line carried
+//! so made the mushroom's kernels about a fifth slower), so two walls on one
+//! line are one step instead.
 //!
 //! The earliest wall is kept as an undivided fraction (`dist / speed`) and
 //! compared cross-multiplied, as the scalar `SegmentTable::cast` compares
@@ -203,6 +211,12 @@ pub(super) enum Step {
     /// A flat wall along an axis; `true` if the step before is one along
     /// the same axis with bitwise the same normal (as for `One`).
     AxisOne(Axis, bool),
+    /// Two walls along an axis that lie on one line (bitwise the same
+    /// normal and coordinate across), visited one after the other, as the
+    /// mushroom's two halves of the cap's floor: what the cast computes
+    /// from the line alone ([`Across`]) is computed once for both, then
+    /// each wall's tests along it. `true` as for `AxisOne`.
+    AxisLine(Axis, Axis, bool),
     /// Two walls along the same axis with opposite normals (lower id first).
     AxisPair(Axis, Axis),
 }
@@ -219,19 +233,30 @@ pub(super) fn steps(table: &SegmentTable) -> Vec<Step> {
     for v in table.flat_visits() {
         // A wall cast alone reuses `−(v·n)` and `v·dir` of the step before
         // if that is a wall of the same form with bitwise the same normal.
-        let last = steps.last();
-        steps.push(match *v {
+        let last = steps.last().copied();
+        let step = match *v {
             FlatVisit::One(i) => {
                 let f = flat(i);
                 match Axis::new(&f) {
                     Some(a) => {
-                        let shares = matches!(last, Some(Step::AxisOne(p, _))
-                            if p.upright == a.upright && p.n.to_bits() == a.n.to_bits());
-                        Step::AxisOne(a, shares)
+                        let normal =
+                            |p: &Axis| p.upright == a.upright && p.n.to_bits() == a.n.to_bits();
+                        match last {
+                            // On the line of the wall before: cast with it.
+                            Some(Step::AxisOne(p, shares))
+                                if normal(&p) && p.sn.to_bits() == a.sn.to_bits() =>
+                            {
+                                Step::AxisLine(p, a, shares)
+                            }
+                            Some(Step::AxisOne(p, _) | Step::AxisLine(_, p, _)) if normal(&p) => {
+                                Step::AxisOne(a, true)
+                            }
+                            _ => Step::AxisOne(a, false),
+                        }
                     }
                     None => {
                         let bits = |w: &Flat| (w.nx.to_bits(), w.ny.to_bits());
-                        let shares = matches!(last, Some(Step::One(p, _)) if bits(p) == bits(&f));
+                        let shares = matches!(last, Some(Step::One(p, _)) if bits(&p) == bits(&f));
                         Step::One(f, shares)
                     }
                 }
@@ -246,7 +271,13 @@ pub(super) fn steps(table: &SegmentTable) -> Vec<Step> {
                     _ => Step::Pair(f, g),
                 }
             }
-        });
+        };
+        // A wall on the line of the one before replaces it, the two cast
+        // as one step.
+        if matches!(step, Step::AxisLine(..)) {
+            steps.pop();
+        }
+        steps.push(step);
     }
     steps
 }
@@ -260,31 +291,65 @@ fn approach<L: Lanes>(f: &FlatLanes<L>, w: L, vd: L, lo: f64, ray: &Ray<L>) -> (
     let rely = ray.y - f.sy;
     let dist = relx * f.nx + rely * f.ny;
     let along = relx * f.dx + rely * f.dy;
-    accept(dist, along, f.hi, w, vd, lo)
+    let line = Across::new(dist, w, vd, lo);
+    (line.span(along, f.hi, w), line.dist)
 }
 
-/// [`approach`] for a wall along an axis, in the ray's frame across and
-/// along it (`w = −(v·n)`, `vd = v·dir` in that frame too).
+/// The ball's offset along a wall along an axis from its start, in the
+/// ray's frame across and along it.
 #[inline(always)]
-fn approach_axis<L: Lanes>(f: &AxisLanes<L>, w: L, vd: L, lo: f64, r: &AxisRay<L>) -> (L::Mask, L) {
-    let dist = (r.pn - f.sn) * f.n;
-    let along = (r.pt - f.st) * f.d;
-    accept(dist, along, f.hi, w, vd, lo)
+fn along_axis<L: Lanes>(f: &AxisLanes<L>, r: &AxisRay<L>) -> L {
+    (r.pt - f.st) * f.d
 }
 
-/// `LineSegment::approach`'s tests from the ball's distance `dist` from the
-/// wall's line and its offset `along` it from the start.
-#[inline(always)]
-fn accept<L: Lanes>(dist: L, along: L, hi: L, w: L, vd: L, lo: f64) -> (L::Mask, L) {
-    let zero = L::splat(0.0);
-    let lo = L::splat(lo);
-    // Moving into the wall, not behind it (a NaN distance is not "behind").
-    let ok = dist.test::<{ cmp::NLT }>(lo, w.gt(zero));
-    // The positive part (`+0.0` for either zero, as the scalar's).
-    let dist = dist.max(zero);
-    let along_w = along * w + vd * dist;
-    let ok = along_w.test::<{ cmp::LE }>(hi * w, along_w.test::<{ cmp::GE }>(lo * w, ok));
-    (ok, dist)
+/// What `LineSegment::approach` computes from a wall's line alone, given
+/// `w = −(v·n)` and `vd = v·dir`: walls on one line share it.
+#[derive(Clone, Copy, Debug)]
+struct Across<L: Lanes> {
+    /// Moving into the line, not behind it.
+    ok: L::Mask,
+    /// The ball's distance from the line, its positive part.
+    dist: L,
+    /// `vd · dist` and `lo · w`, the terms of the tests along the wall
+    /// that do not depend on where on the line it lies.
+    vd_dist: L,
+    lo_w: L,
+}
+
+impl<L: Lanes> Across<L> {
+    /// From the ball's distance `dist` from the line (`lo`: minus the
+    /// table's slack).
+    #[inline(always)]
+    fn new(dist: L, w: L, vd: L, lo: f64) -> Self {
+        let zero = L::splat(0.0);
+        let lo = L::splat(lo);
+        // Moving into the wall, not behind it (a NaN distance is not
+        // "behind").
+        let ok = dist.test::<{ cmp::NLT }>(lo, w.gt(zero));
+        // The positive part (`+0.0` for either zero, as the scalar's).
+        let dist = dist.max(zero);
+        Across {
+            ok,
+            dist,
+            vd_dist: vd * dist,
+            lo_w: lo * w,
+        }
+    }
+
+    /// From the ball's distance from a wall's line along an axis.
+    #[inline(always)]
+    fn axis(f: &AxisLanes<L>, w: L, vd: L, lo: f64, r: &AxisRay<L>) -> Self {
+        Self::new((r.pn - f.sn) * f.n, w, vd, lo)
+    }
+
+    /// `LineSegment::approach`'s tests along the wall, whose start the
+    /// ball is `along` from and whose reach is `hi`: the lanes where it
+    /// returns `Some`.
+    #[inline(always)]
+    fn span(&self, along: L, hi: L, w: L) -> L::Mask {
+        let along_w = along * w + self.vd_dist;
+        along_w.test::<{ cmp::LE }>(hi * w, along_w.test::<{ cmp::GE }>(self.lo_w, self.ok))
+    }
 }
 
 /// The earliest flat wall so far, lane by lane: its undivided flight time
@@ -300,8 +365,14 @@ impl<L: Lanes> Earliest<L> {
     /// The lanes of `ok` where the candidate `(dist, w)` of wall `id` comes
     /// first: strictly earlier (`dist·speed' < dist'·w`, any candidate while
     /// there is none), or, if `TIES`, as early with a lower id.
+    ///
+    /// The first wall cast comes first wherever it is found (the NaN
+    /// `dist` of none fails every `<=`), so its lanes are `ok` as they are.
     #[inline(always)]
-    fn beaten<const TIES: bool>(&self, ok: L::Mask, dist: L, w: L, id: L) -> L::Mask {
+    fn beaten<const TIES: bool>(&self, first: bool, ok: L::Mask, dist: L, w: L, id: L) -> L::Mask {
+        if first {
+            return ok;
+        }
         let (x, y) = (dist * self.speed, self.dist * w);
         if TIES {
             ok.and(
@@ -334,7 +405,8 @@ pub(super) fn earliest<L: Lanes>(steps: &[Step], lo: f64, ray: &Ray<L>) -> Earli
     };
     // `−(v·n)` and `v·dir` of the last flat wall cast alone.
     let (mut w, mut vd) = (zero, zero);
-    for step in steps {
+    for (i, step) in steps.iter().enumerate() {
+        let first = i == 0;
         match step {
             Step::One(f, shares) => {
                 let c = f.lanes::<L>();
@@ -345,7 +417,7 @@ pub(super) fn earliest<L: Lanes>(steps: &[Step], lo: f64, ray: &Ray<L>) -> Earli
                 let (ok, dist) = approach(&c, w, vd, lo, ray);
                 // Every wall visited before this one has a lower id, so
                 // a tie never goes to it: strictly earlier suffices.
-                let take = best.beaten::<false>(ok, dist, w, c.id);
+                let take = best.beaten::<false>(first, ok, dist, w, c.id);
                 best.keep(take, dist, w, c.id);
             }
             Step::Pair(a, b) => {
@@ -368,7 +440,7 @@ pub(super) fn earliest<L: Lanes>(steps: &[Step], lo: f64, ray: &Ray<L>) -> Earli
                 let w = wa.abs();
                 let vd = vx * c.dx + vy * c.dy;
                 let (ok, dist) = approach(&c, w, vd, lo, ray);
-                let take = best.beaten::<true>(ok, dist, w, c.id);
+                let take = best.beaten::<true>(first, ok, dist, w, c.id);
                 best.keep(take, dist, w, c.id);
             }
             Step::AxisOne(a, shares) => {
@@ -378,11 +450,30 @@ pub(super) fn earliest<L: Lanes>(steps: &[Step], lo: f64, ray: &Ray<L>) -> Earli
                     w = r.vn * L::splat(a.mn);
                     vd = r.vt * c.d;
                 }
-                let (ok, dist) = approach_axis(&c, w, vd, lo, &r);
+                let line = Across::axis(&c, w, vd, lo, &r);
+                let (ok, dist) = (line.span(along_axis(&c, &r), c.hi, w), line.dist);
                 // Visited in the same order as `Step::One`: strictly
                 // earlier suffices.
-                let take = best.beaten::<false>(ok, dist, w, c.id);
+                let take = best.beaten::<false>(first, ok, dist, w, c.id);
                 best.keep(take, dist, w, c.id);
+            }
+            Step::AxisLine(a, b, shares) => {
+                let r = AxisRay::new(ray, a.upright);
+                let (ca, cb) = (a.lanes::<L>(), b.lanes::<L>());
+                if !shares {
+                    w = r.vn * L::splat(a.mn);
+                    vd = r.vt * ca.d;
+                }
+                // The second wall's `−(v·n)`, `v·dir` (its direction is
+                // the first's: the normals are the same) and everything
+                // from the line are the first's, bitwise.
+                let line = Across::axis(&ca, w, vd, lo, &r);
+                for (c, first) in [(ca, first), (cb, false)] {
+                    let ok = line.span(along_axis(&c, &r), c.hi, w);
+                    // Visited in the same order as `Step::One`.
+                    let take = best.beaten::<false>(first, ok, line.dist, w, c.id);
+                    best.keep(take, line.dist, w, c.id);
+                }
             }
             Step::AxisPair(a, b) => {
                 // As `Step::Pair`, in the frame of the pair's axis (both
@@ -402,8 +493,9 @@ pub(super) fn earliest<L: Lanes>(steps: &[Step], lo: f64, ray: &Ray<L>) -> Earli
                 };
                 let w = wa.abs();
                 let vd = r.vt * c.d;
-                let (ok, dist) = approach_axis(&c, w, vd, lo, &r);
-                let take = best.beaten::<true>(ok, dist, w, c.id);
+                let line = Across::axis(&c, w, vd, lo, &r);
+                let (ok, dist) = (line.span(along_axis(&c, &r), c.hi, w), line.dist);
+                let take = best.beaten::<true>(first, ok, dist, w, c.id);
                 best.keep(take, dist, w, c.id);
             }
         }

@@ -24,6 +24,10 @@
 //! the rarest steps, reuses the reference's fetch when every lane's ids
 //! agree ([`Geom::land_both`]).
 //!
+//! An arc whose chord lies along an axis (`ArcSegment::chord`, exact for
+//! the stadium's and the mushroom's caps) tests its contact with one
+//! product instead of a cross product ([`Cover`]).
+//!
 //! The flat walls' forms (alone, paired with their opposite, along an axis)
 //! and the search for the earliest of them are in
 //! [`flat_walls`](super::flat_walls); the arcs, the choice between the two
@@ -31,9 +35,7 @@
 //!
 //! [`SegmentTable`]: spinball_geometry::SegmentTable
 
-use std::f64::consts::TAU;
-
-use spinball_geometry::{ArcSegment, DVec2, Segment, SegmentTable};
+use spinball_geometry::{ArcSegment, Segment, SegmentTable};
 
 use super::flat_walls::{Step, earliest, steps};
 use super::round::{Ray, Round, concave_root, contact, convex_root};
@@ -50,26 +52,57 @@ struct Curve {
     cx: f64,
     cy: f64,
     round: Round,
-    /// A full circle covers every contact.
-    full: bool,
-    /// The chord from start to end, times the side of it the arc lies on.
-    chx: f64,
-    chy: f64,
+    /// How a contact is tested against the chord.
+    cover: Cover,
     /// `−slack · |chord| − lift`: how far behind the chord's line moved
     /// through the centre a contact still counts (times `|v|²` in the test).
     floor: f64,
 }
 
+/// The test of `ArcSegment::approach` that a contact lies on the arc: on
+/// its side of the chord, `side · chord × q ≥ floor · |v|²`, with `q` the
+/// contact's offset from the centre times `|v|²`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Cover {
+    /// A full circle covers every contact: no test.
+    Full,
+    /// A chord along an axis (one of `side · chord`'s components exactly
+    /// zero, as the stadium's caps and the mushroom's cap have): the cross
+    /// product `q_y c_x − q_x c_y` is one product, `q_x · (−c_y)` if
+    /// `upright` (`c_x` zero), else `q_y · c_x`, and `q`'s other component
+    /// is not computed. The product left out is a signed zero wherever the
+    /// test counts (where the root is found, `q` is finite: positions and
+    /// speeds within `1e60`, the crate's ranges, keep `|q|` below `1e182`);
+    /// it can change only the sign of a zero cross product, which the
+    /// comparison does not see.
+    Axis { upright: bool, k: f64 },
+    /// Any other chord, `side · chord`: the whole cross product.
+    Oblique { chx: f64, chy: f64 },
+}
+
+impl Cover {
+    fn new(full: bool, chx: f64, chy: f64) -> Self {
+        if full {
+            Cover::Full
+        } else if chy == 0.0 {
+            Cover::Axis {
+                upright: false,
+                k: chx,
+            }
+        } else if chx == 0.0 {
+            Cover::Axis {
+                upright: true,
+                k: -chy,
+            }
+        } else {
+            Cover::Oblique { chx, chy }
+        }
+    }
+}
+
 impl Curve {
     fn new(id: usize, a: &ArcSegment, slack: f64) -> Self {
-        // `ArcSegment::new`'s private chord, side and fullness, recomputed
-        // from the public angles with the same expressions.
-        let (r, from) = (a.radius(), a.start_direction());
-        let to = DVec2::from_angle(a.start_angle() + a.sweep());
-        let mid = DVec2::from_angle(a.start_angle() + 0.5 * a.sweep());
-        let chord = (to - from) * r;
-        let side = chord.perp_dot((mid - from) * r).signum();
-        let full = a.sweep().abs() >= TAU * (1.0 - 1e-12);
+        let (r, chord, side) = (a.radius(), a.chord(), a.chord_side());
         let (c, start) = (a.center(), a.start());
         let lift = side * chord.perp_dot(c - start);
         Curve {
@@ -78,11 +111,9 @@ impl Curve {
             cx: c.x,
             cy: c.y,
             round: Round::new(r),
-            full,
             // `side` is ±1: scaling the chord by it negates the cross
             // product exactly.
-            chx: side * chord.x,
-            chy: side * chord.y,
+            cover: Cover::new(a.is_full(), side * chord.x, side * chord.y),
             floor: -slack * chord.length() - lift,
         }
     }
@@ -327,12 +358,16 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
         };
         let ok = root.ok.and(root.num.ge(zero).or(on));
         let num = root.num.max(zero);
-        if a.full {
-            return (ok, num);
-        }
-        let qx = root.dx * ray.a + ray.vx * num;
-        let qy = root.dy * ray.a + ray.vy * num;
-        let cross = qy * a.chx - qx * a.chy;
+        // The contact's offset from the centre, times `|v|²`, one
+        // coordinate at a time.
+        let qx = || root.dx * ray.a + ray.vx * num;
+        let qy = || root.dy * ray.a + ray.vy * num;
+        let cross = match a.cover {
+            Cover::Full => return (ok, num),
+            Cover::Axis { upright: true, k } => qx() * L::splat(k),
+            Cover::Axis { upright: false, k } => qy() * L::splat(k),
+            Cover::Oblique { chx, chy } => qy() * L::splat(chx) - qx() * L::splat(chy),
+        };
         (
             cross.test::<{ cmp::GE }>(L::splat(a.floor) * ray.a, ok),
             num,
@@ -343,11 +378,21 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
     /// earlier root replaces the best (and any root replaces none).
     #[inline(always)]
     fn arcs<L: Lanes>(&self, ray: &Ray<L>) -> Nearest<L> {
-        let mut best = Nearest {
-            num: L::splat(f64::NAN),
-            id: L::splat(0.0),
+        let none = L::splat(f64::NAN);
+        let Some((first, rest)) = self.arcs.split_first() else {
+            return Nearest {
+                num: none,
+                id: L::splat(0.0),
+            };
         };
-        for a in self.arcs {
+        // Any root replaces none: the first arc's comparison with the NaN
+        // best would be true in every lane, so it is left out.
+        let (ok, num) = self.approach_arc(first, ray);
+        let mut best = Nearest {
+            num: L::select(ok, num, none),
+            id: L::select(ok, L::splat(first.id), L::splat(0.0)),
+        };
+        for a in rest {
             let (ok, num) = self.approach_arc(a, ray);
             let take = best.num.test::<{ cmp::NLE }>(num, ok);
             best.num = L::select(take, num, best.num);
@@ -460,7 +505,7 @@ impl<const CURVED: bool> Segments<'_, CURVED> {
 /// Tables built from segments for the tests here and in the kernels.
 #[cfg(test)]
 pub(crate) mod tests {
-    use std::f64::consts::{FRAC_PI_2, PI};
+    use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
     use rand::{Rng, SeedableRng};
     use rand_pcg::Pcg64;
@@ -621,6 +666,14 @@ pub(crate) mod tests {
                     if a.upright { "|" } else { "" },
                     if *shares { "~" } else { "" }
                 ),
+                // Two walls on one line: `a=b`.
+                Step::AxisLine(a, b, shares) => format!(
+                    "a{}{}{}={}",
+                    a.id,
+                    if a.upright { "|" } else { "" },
+                    if *shares { "~" } else { "" },
+                    b.id
+                ),
                 Step::AxisPair(a, b) => {
                     format!("a{}+{}{}", a.id, b.id, if a.upright { "|" } else { "" })
                 }
@@ -633,10 +686,11 @@ pub(crate) mod tests {
         // Sinai: (0, 2) and (1, 3), then the hole.
         assert_eq!(ids(&sinai(2.0, 1.0)), ["a0+2", "a1+3|", "arc4"]);
         // Mushroom: only the stem's sides (1, 5) face opposite ways; the
-        // stem's floor (0) and the cap's floor (2, 4) face the same way.
+        // stem's floor (0) and the cap's floor (2, 4) face the same way,
+        // and the cap's floor's two halves lie on one line.
         assert_eq!(
             ids(&mushroom(1.0, 0.3, 1.0)),
-            ["a0", "a2~", "a4~", "a1+5|", "arc3"]
+            ["a0", "a2~=4", "a1+5|", "arc3"]
         );
         // A square standing on a corner: two oblique pairs.
         let diamond =
@@ -877,6 +931,8 @@ pub(crate) mod tests {
 
 #[cfg(test)]
 mod counts {
+    use std::f64::consts::TAU;
+
     use rand::{Rng, SeedableRng};
     use rand_pcg::Pcg64;
     use spinball_geometry::{Boundary, DVec2, Stadium};
