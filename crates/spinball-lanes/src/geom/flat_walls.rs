@@ -295,6 +295,14 @@ fn approach<L: Lanes>(f: &FlatLanes<L>, w: L, vd: L, lo: f64, ray: &Ray<L>) -> (
     (line.span(along, f.hi, w), line.dist)
 }
 
+/// [`approach`] for a wall along an axis, in the ray's frame across and
+/// along it (`w = −(v·n)`, `vd = v·dir` in that frame too).
+#[inline(always)]
+fn approach_axis<L: Lanes>(f: &AxisLanes<L>, w: L, vd: L, lo: f64, r: &AxisRay<L>) -> (L::Mask, L) {
+    let line = Across::axis(f, w, vd, lo, r);
+    (line.span(along_axis(f, r), f.hi, w), line.dist)
+}
+
 /// The ball's offset along a wall along an axis from its start, in the
 /// ray's frame across and along it.
 #[inline(always)]
@@ -450,8 +458,7 @@ pub(super) fn earliest<L: Lanes>(steps: &[Step], lo: f64, ray: &Ray<L>) -> Earli
                     w = r.vn * L::splat(a.mn);
                     vd = r.vt * c.d;
                 }
-                let line = Across::axis(&c, w, vd, lo, &r);
-                let (ok, dist) = (line.span(along_axis(&c, &r), c.hi, w), line.dist);
+                let (ok, dist) = approach_axis(&c, w, vd, lo, &r);
                 // Visited in the same order as `Step::One`: strictly
                 // earlier suffices.
                 let take = best.beaten::<false>(first, ok, dist, w, c.id);
@@ -493,8 +500,7 @@ pub(super) fn earliest<L: Lanes>(steps: &[Step], lo: f64, ray: &Ray<L>) -> Earli
                 };
                 let w = wa.abs();
                 let vd = r.vt * c.d;
-                let line = Across::axis(&c, w, vd, lo, &r);
-                let (ok, dist) = (line.span(along_axis(&c, &r), c.hi, w), line.dist);
+                let (ok, dist) = approach_axis(&c, w, vd, lo, &r);
                 let take = best.beaten::<true>(first, ok, dist, w, c.id);
                 best.keep(take, dist, w, c.id);
             }
