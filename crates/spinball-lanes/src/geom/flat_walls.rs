@@ -215,7 +215,8 @@ pub(super) enum Step {
     /// normal and coordinate across), visited one after the other, as the
     /// mushroom's two halves of the cap's floor: what the cast computes
     /// from the line alone ([`Across`]) is computed once for both, then
-    /// each wall's tests along it. `true` as for `AxisOne`.
+    /// each wall's tests along it, and the two are compared with the
+    /// earliest so far as one candidate. `true` as for `AxisOne`.
     AxisLine(Axis, Axis, bool),
     /// Two walls along the same axis with opposite normals (lower id first).
     AxisPair(Axis, Axis),
@@ -475,12 +476,19 @@ pub(super) fn earliest<L: Lanes>(steps: &[Step], lo: f64, ray: &Ray<L>) -> Earli
                 // the first's: the normals are the same) and everything
                 // from the line are the first's, bitwise.
                 let line = Across::axis(&ca, w, vd, lo, &r);
-                for (c, first) in [(ca, first), (cb, false)] {
-                    let ok = line.span(along_axis(&c, &r), c.hi, w);
-                    // Visited in the same order as `Step::One`.
-                    let take = best.beaten::<false>(first, ok, line.dist, w, c.id);
-                    best.keep(take, line.dist, w, c.id);
-                }
+                let on_a = line.span(along_axis(&ca, &r), ca.hi, w);
+                let on_b = line.span(along_axis(&cb, &r), cb.hi, w);
+                // The two walls are one candidate, `(line.dist, w)`, with
+                // the first's id where it is found. Visited one after the
+                // other, the second could not replace the first: against a
+                // best of the same fraction, its `line.dist · w` is the
+                // same finite product on both sides (within the crate's
+                // ranges), and only a strictly earlier candidate replaces.
+                // So one comparison with the best before them picks what
+                // the two in turn pick, bitwise.
+                let id = L::select(on_a, ca.id, cb.id);
+                let take = best.beaten::<false>(first, on_a.or(on_b), line.dist, w, id);
+                best.keep(take, line.dist, w, id);
             }
             Step::AxisPair(a, b) => {
                 // As `Step::Pair`, in the frame of the pair's axis (both
