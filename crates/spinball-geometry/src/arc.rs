@@ -59,9 +59,14 @@ impl ArcSegment {
         let full = sweep.abs() >= TAU * (1.0 - 1e-12);
         let from = DVec2::from_angle(start_angle);
         let to = DVec2::from_angle(start_angle + sweep);
-        let mid = DVec2::from_angle(start_angle + 0.5 * sweep);
         let chord = square_up((to - from) * radius);
-        let side = chord.perp_dot((mid - from) * radius).signum();
+        // Going counter-clockwise about the centre the arc lies to the right
+        // of its chord (start to end), clockwise to the left, whatever the
+        // sweep. (This used to be the sign of `chord × (mid − start)`: the
+        // same ±1 wherever that cross product is resolved, but noise for an
+        // arc whose sagitta is below the rounding of its radius, which then
+        // covered the far side of its circle.)
+        let side = -sweep.signum();
         Ok(ArcSegment {
             center,
             radius,
@@ -143,6 +148,34 @@ impl ArcSegment {
     #[must_use]
     pub fn is_full(&self) -> bool {
         self.full
+    }
+
+    /// The sagitta: how far the arc's middle lies from its chord,
+    /// `R (1 − cos(θ/2)) = 2 R sin²(θ/4)` for a sweep `θ` (computed in the
+    /// second form, which does not cancel for a nearly flat arc).
+    #[must_use]
+    pub fn sagitta(&self) -> f64 {
+        let q = (0.25 * self.sweep).sin();
+        2.0 * self.radius * q * q
+    }
+
+    /// Whether the direction `angle` (radians from +x, seen from the
+    /// centre) lies within the arc's sweep, decided on the angles given to
+    /// the constructor; `None` within `tol` radians of either end, where
+    /// the answer is rounding.
+    pub(crate) fn spans_angle(&self, angle: f64, tol: f64) -> Option<bool> {
+        if self.full {
+            return Some(true);
+        }
+        // How far along the sweep (in its own direction) the angle lies.
+        let u = ((angle - self.start_angle) * self.sweep.signum()).rem_euclid(TAU);
+        let span = self.sweep.abs();
+        let near = |x: f64, y: f64| (x - y).abs() <= tol;
+        if near(u, 0.0) || near(u, TAU) || near(u, span) {
+            None
+        } else {
+            Some(u < span)
+        }
     }
 
     /// Whether a point on the circle lies on this arc (ends included, within

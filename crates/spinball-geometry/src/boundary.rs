@@ -47,20 +47,7 @@ pub trait Boundary {
     /// is a real chord of the table: casting backwards and then forwards from
     /// the back wall reaches the same front wall point, passing `p`.
     fn contains(&self, p: DVec2) -> bool {
-        let (Some(front), Some(back)) = (self.cast(p, PROBE), self.cast(p, -PROBE)) else {
-            return false;
-        };
-        let tol = 1e-9 * self.length_scale();
-        // Both hits must lie on the line through `p`: from a point outside, a
-        // cast may return a contact snapped onto a wall somewhere else.
-        let on_line = |hit: &Hit, dir: DVec2| (p + dir * hit.time - hit.point).length() <= tol;
-        if !on_line(&front, PROBE) || !on_line(&back, -PROBE) {
-            return false;
-        }
-        let Some(again) = self.cast(back.point, PROBE) else {
-            return false;
-        };
-        (again.point - front.point).length() <= tol
+        chord_contains(self, p)
     }
 
     /// Whether `p` lies in the table shrunk towards the box centre by
@@ -287,6 +274,25 @@ impl<B: Boundary> Boundary for &B {
     fn hit_at(&self, s: f64) -> Option<Hit> {
         (**self).hit_at(s)
     }
+}
+
+/// The default [`Boundary::contains`]: whether the chord through `p` along
+/// a fixed direction is a real chord of the table.
+pub(crate) fn chord_contains<B: Boundary + ?Sized>(table: &B, p: DVec2) -> bool {
+    let (Some(front), Some(back)) = (table.cast(p, PROBE), table.cast(p, -PROBE)) else {
+        return false;
+    };
+    let tol = 1e-9 * table.length_scale();
+    // Both hits must lie on the line through `p`: from a point outside, a
+    // cast may return a contact snapped onto a wall somewhere else.
+    let on_line = |hit: &Hit, dir: DVec2| (p + dir * hit.time - hit.point).length() <= tol;
+    if !on_line(&front, PROBE) || !on_line(&back, -PROBE) {
+        return false;
+    }
+    let Some(again) = table.cast(back.point, PROBE) else {
+        return false;
+    };
+    (again.point - front.point).length() <= tol
 }
 
 /// Hits of a fan of rays from the reference point.

@@ -102,6 +102,53 @@ pub enum GeometryError {
         /// Index of the wall in the list given to the constructor.
         index: usize,
     },
+    /// A wall shorter than the smallest length a table accepts
+    /// ([`MIN_LENGTH`]), but not of zero length.
+    #[error(
+        "wall {index} is {length:e} long, below the smallest length that works, {min:e}: squares of lengths times squares of speeds (1e-60..=1e60) must stay normal f64 (scale the table up)"
+    )]
+    WallTooShort {
+        /// Index of the wall in the list given to the constructor.
+        index: usize,
+        /// Its length.
+        length: f64,
+        /// The smallest length that works, [`MIN_LENGTH`].
+        min: f64,
+    },
+    /// An arc of a table built from walls whose radius the casts cannot run
+    /// exactly on that table: below [`MIN_ARC_RATIO`] of the table's size,
+    /// above [`MAX_ARC_RATIO`] sizes, or above [`MAX_ARC_CHORD_RATIO`] times
+    /// its own chord (so flat that it is a line segment to the table's
+    /// rounding).
+    #[error(
+        "arc {index} of loop {lp} has radius {radius:e}, outside the radii that run exactly for it, [{min:.3e}, {max:.3e}] (table size {size:.3e}, chord {chord:.3e}, sagitta {sagitta:.3e}): {why}"
+    )]
+    ArcRadius {
+        /// Loop of the arc (0 = outer, 1.. = holes).
+        lp: usize,
+        /// Index of the arc within its loop.
+        index: usize,
+        /// Its radius.
+        radius: f64,
+        /// Smallest radius that works: [`MIN_ARC_RATIO`] times the table's
+        /// size (half its box's diagonal).
+        min: f64,
+        /// Largest radius that works for this arc: the smaller of
+        /// [`MAX_ARC_RATIO`] times the size the walls' tolerance follows
+        /// (the table's size or its largest coordinate) and
+        /// [`MAX_ARC_CHORD_RATIO`] times the arc's chord.
+        max: f64,
+        /// The table's size the bounds are relative to (for `max`, the
+        /// length the walls' tolerance follows).
+        size: f64,
+        /// The arc's chord (distance from its start to its end; 0 for a
+        /// full circle).
+        chord: f64,
+        /// The arc's sagitta (distance of its middle from its chord).
+        sagitta: f64,
+        /// Which bound it breaks and why it is there.
+        why: &'static str,
+    },
     /// An arc sweeps more than a full turn or nothing at all.
     #[error("arc {index} sweep {sweep} must satisfy 0 < |sweep| <= 2*pi")]
     BadSweep {
@@ -168,6 +215,26 @@ pub const MIN_SINAI_RATIO: f64 = 1e-6;
 /// Sinai obstacle, a smaller arc's `r²` drowns in the rounding of squared
 /// distances across the table.
 pub const MIN_ARC_RATIO: f64 = 1e-6;
+/// Largest radius of an arc of a [`SegmentTable`](crate::SegmentTable),
+/// in table sizes (the size its walls' tolerance follows: half its box's
+/// diagonal, or its largest coordinate if that is larger). An arc's cast
+/// works relative to its centre, `R` away: its contacts and the test of
+/// whether a contact lies between its ends round by a few `ε R` (measured:
+/// up to `1.3 ε R` off the circle), and the walls' tolerance is `64 ε` of
+/// the size. At 8 sizes the rounding stays inside the tolerance with room
+/// to spare; beyond about 100 sizes balls found no wall at the arc's ends
+/// (a unit square with a top wall of radius 1e2: 3 of 12 000 shots at its
+/// corners; 1e6: a run ended with `NoWall` within 3e4 collisions).
+pub const MAX_ARC_RATIO: f64 = 8.0;
+/// Largest radius of an arc of a [`SegmentTable`](crate::SegmentTable) in
+/// units of its chord (a sweep of at least `2 asin(1/64)` = 1.8°; a full
+/// circle has no ends and no such bound): an arc meets its chord at half
+/// its sweep, so the test of whether a contact lies between its ends,
+/// tolerant by the walls' tolerance across the chord, places the ends only
+/// to that tolerance over `sin(sweep / 2)` along the wall, `64 ×` it at
+/// this bound (`9e-13` of the table's size). A flatter arc is a line
+/// segment to the table's rounding.
+pub const MAX_ARC_CHORD_RATIO: f64 = 32.0;
 /// Largest distance of a [`SegmentTable`](crate::SegmentTable)'s
 /// coordinates from the origin, in table sizes: coordinates round by `ε`
 /// of their size, and the walls' tolerance follows them (`64 ε` of the

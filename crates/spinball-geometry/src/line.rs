@@ -56,7 +56,9 @@ impl LineSegment {
     /// # Errors
     /// [`GeometryError::NonFinite`] for NaN or infinite coordinates,
     /// [`GeometryError::OutOfRange`] for a coordinate beyond `±1e60`,
-    /// [`GeometryError::DegenerateWall`] if the wall is shorter than `1e-60`.
+    /// [`GeometryError::DegenerateWall`] if its ends coincide,
+    /// [`GeometryError::WallTooShort`] if it is shorter than
+    /// [`MIN_LENGTH`](crate::error::MIN_LENGTH) (`1e-60`).
     pub fn new(start: DVec2, end: DVec2) -> Result<Self, GeometryError> {
         for (name, v) in [
             ("start.x", start.x),
@@ -68,8 +70,19 @@ impl LineSegment {
         }
         let delta = end - start;
         let length = delta.length();
-        if !(length >= MIN_LENGTH) || !length.is_finite() {
+        if delta == DVec2::ZERO {
             return Err(GeometryError::DegenerateWall { index: 0 });
+        }
+        if !(length >= MIN_LENGTH) {
+            // Two distinct points closer than any table can run (a square
+            // of side 1e-300): not degenerate, too small.
+            return Err(GeometryError::WallTooShort {
+                index: 0,
+                // `hypot` does not underflow where `x² + y²` does (a wall
+                // of length 1e-300 has a squared length of 0).
+                length: delta.x.hypot(delta.y),
+                min: MIN_LENGTH,
+            });
         }
         let dir = delta / length;
         Ok(LineSegment {

@@ -308,17 +308,22 @@ fn an_arc_too_small_for_the_table_is_refused() {
         )]
     };
     let err = SegmentTable::with_holes(square(4.0), vec![hole(1e-9)]).unwrap_err();
-    assert!(
-        matches!(
-            err,
-            GeometryError::OutOfRange {
-                name: "arc radius / table size",
-                min: 1e-6,
-                ..
-            }
-        ),
-        "{err}"
-    );
+    // Named by its loop and index, with the range that works: from 1e-6
+    // of the table's size (half the diagonal, 2√2).
+    match err {
+        GeometryError::ArcRadius {
+            lp: 1,
+            index: 0,
+            radius,
+            min,
+            ..
+        } => {
+            assert_eq!(radius, 1e-9);
+            assert!((min - 1e-6 * 8f64.sqrt()).abs() < 1e-20, "{min}");
+        }
+        other => panic!("expected ArcRadius of arc 0 of loop 1, got {other:?}"),
+    }
+    assert!(err.to_string().contains("arc 0 of loop 1"), "{err}");
     let t = SegmentTable::with_holes(square(4.0), vec![hole(1e-4)]).unwrap();
     // Aimed at the small disk, the ball meets it.
     let hit = t.cast(DVec2::new(1.0, 1.5), DVec2::new(1.0, 0.5)).unwrap();
