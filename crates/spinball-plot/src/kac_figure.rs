@@ -2,7 +2,7 @@
 //! per-orbit histogram of mean return time over `1/μ(A)`, the mean ratio
 //! against α, and the CSV rows per comparison and per orbit.
 
-use spinball_analysis::KacComparison;
+use spinball_analysis::phase_space::KacComparison;
 
 use crate::RGBColor;
 use crate::csv::{Csv, optional};
@@ -97,7 +97,8 @@ pub fn kac_ratio_series(label: &str, runs: &[KacComparison]) -> Series {
 mod tests {
     use super::*;
     use crate::plot::Plot;
-    use spinball_analysis::{SectionBox, Threads, kac_comparison};
+    use spinball_analysis::phase_space::{SectionBox, kac_comparison};
+    use spinball_analysis::run::Threads;
     use spinball_core::{Billiard, SpinLaw};
     use spinball_geometry::Stadium;
 

@@ -36,7 +36,7 @@
 //!   [`collision_rate_grid`] (ν and λ/ν against α) and
 //!   [`spectrum_grid`] (the Lyapunov spectrum against α);
 //! - [`measured`] and [`paper_markers`]: series of values ± SEM and of the
-//!   paper's numbers ([`spinball_analysis::paper`]); [`table_i_markdown`]
+//!   paper's numbers ([`spinball_analysis::diagnostics`]); [`table_i_markdown`]
 //!   and friends ([`table_i_rows`], [`table_i_grid`]) set our convergence
 //!   table beside the paper's Table I.
 //!
