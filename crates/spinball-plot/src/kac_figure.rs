@@ -6,7 +6,7 @@ use spinball_analysis::phase_space::KacComparison;
 
 use crate::RGBColor;
 use crate::csv::{Csv, optional};
-use crate::histogram::{Histogram, Marker};
+use crate::histogram::{HistogramPlot, Marker};
 use crate::lines::Series;
 
 /// The columns of [`kac_row`].
@@ -68,8 +68,8 @@ pub fn kac_orbit_rows(csv: &mut Csv, table: &str, kac: &KacComparison) {
 /// The returning orbits' ratios to Kac's in 30 bins over `[0, 2]` with a
 /// line at 1, titled `table`, α and how many orbits never came back.
 #[must_use]
-pub fn kac_histogram(table: &str, kac: &KacComparison, color: RGBColor) -> Histogram {
-    Histogram::new(kac.orbit_ratios())
+pub fn kac_histogram(table: &str, kac: &KacComparison, color: RGBColor) -> HistogramPlot {
+    HistogramPlot::new(kac.orbit_ratios())
         .bins(30)
         .range(0.0, 2.0)
         .title(format!(

@@ -28,7 +28,7 @@ use spinball_analysis::run::{LyapunovEstimate, SpectrumEstimate};
 use crate::RGBColor;
 use crate::colormap::palette;
 use crate::grid::Grid;
-use crate::histogram::{Histogram, Marker};
+use crate::histogram::{HistogramPlot, Marker};
 use crate::lines::{Legend, LineKind, LinePlot, Series};
 
 /// Subscripts of the five exponents.
@@ -58,7 +58,7 @@ const SPECTRUM_VIEWS: [(&str, &[usize], bool); 4] = [
 ///
 /// # Errors
 /// Only for an estimate whose trajectories were emptied or altered.
-pub fn ftle_histogram(estimate: &LyapunovEstimate) -> Result<Histogram, AnalysisError> {
+pub fn ftle_histogram(estimate: &LyapunovEstimate) -> Result<HistogramPlot, AnalysisError> {
     let e = estimate;
     let ftle = e.ftle()?;
     let title = format!(
@@ -70,7 +70,7 @@ pub fn ftle_histogram(estimate: &LyapunovEstimate) -> Result<Histogram, Analysis
     let median = Marker::new(format!("median {:.3}", e.median), e.median)
         .color(RGBColor(0, 90, 200))
         .kind(LineKind::Dashed);
-    let mut h = Histogram::new(ftle.exponents().iter().copied())
+    let mut h = HistogramPlot::new(ftle.exponents().iter().copied())
         .bins(60)
         .density(true)
         .title(title)

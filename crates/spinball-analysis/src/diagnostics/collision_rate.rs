@@ -194,8 +194,17 @@ pub fn liouville_collision_rate<B: Boundary + ?Sized>(table: &B, alpha: f64) -> 
 mod tests {
     use super::*;
     use crate::run::{Ensemble, Threads};
+    use crate::test_support::{at, template};
     use spinball_core::SpinLaw;
     use spinball_geometry::{Sinai, Stadium};
+    #[test]
+    fn rate_summary_of_an_estimate() {
+        let fd = at(template(), 0.5).with_ics(60).run().unwrap();
+        let r = rate_summary(&fd).unwrap();
+        assert!(r.rate_mean > 0.2 && r.rate_mean < 2.0 && r.rate_sem > 0.0);
+        assert!((r.per_collision - fd.mean / r.rate_mean).abs() < 1e-15);
+    }
+
     #[test]
     fn collision_rate_expectations() {
         let stadium = Stadium::new(1.0).unwrap();

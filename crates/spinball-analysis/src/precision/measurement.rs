@@ -148,7 +148,6 @@ pub fn paired_difference(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::diagnostics::rate_summary;
     use crate::estimators::Method;
     use crate::test_support::{at, template};
     #[test]
@@ -171,16 +170,13 @@ mod tests {
     }
 
     #[test]
-    fn rates_normalisation_and_pairs() {
+    fn normalisation_and_pairs() {
         let fd = at(template(), 0.5).with_ics(60).run().unwrap();
         let tangent = at(template(), 0.5)
             .with_ics(60)
             .with_method(Method::Tangent)
             .run()
             .unwrap();
-        let r = rate_summary(&fd).unwrap();
-        assert!(r.rate_mean > 0.2 && r.rate_mean < 2.0 && r.rate_sem > 0.0);
-        assert!((r.per_collision - fd.mean / r.rate_mean).abs() < 1e-15);
         let d = paired_difference(&fd, &tangent).unwrap();
         // Same initial conditions and directions: the methods agree far
         // better than either SEM.
