@@ -1,6 +1,6 @@
 //! Which implementation runs an ensemble's trajectories.
 //!
-//! Documented in the group docs (`run/mod.rs`), section "Engines".
+//! Documented in the group docs (`run/mod.rs`), section "Which engine runs".
 
 use std::fmt;
 

@@ -62,7 +62,7 @@
 //! ([`LyapunovEstimate::merge`](crate::run::LyapunovEstimate::merge) of `[0, k)`
 //! and `[k, n)` equals one run over `[0, n)`).
 //!
-//! # Engines
+//! # Which engine runs
 //!
 //! Which implementation runs an ensemble's trajectories.
 //!
