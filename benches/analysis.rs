@@ -15,6 +15,8 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use spinball::analysis::estimators::{SpectrumOptions, lyapunov_spectrum};
+use spinball::analysis::run::Threads;
 use spinball::prelude::*;
 
 const ICS: u64 = 32;

@@ -9,6 +9,7 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use spinball::dynamics::{Ball, TangentVector};
 use spinball::prelude::*;
 
 fn ball_for<B: Boundary>(billiard: &Billiard<B>) -> Ball {

@@ -12,6 +12,9 @@
 
 use std::f64::consts::PI;
 
+use spinball::analysis::report::SweepRow;
+use spinball::analysis::run::AlphaSweep;
+use spinball::geometry::{ArcSegment, DVec2, LineSegment, Segment};
 use spinball::prelude::*;
 use spinball_plot::cli::FigureArgs;
 

@@ -26,7 +26,8 @@
 use std::process::ExitCode;
 use std::time::Instant;
 
-use spinball::analysis::median;
+use spinball::analysis::estimators::median;
+use spinball::analysis::run::{Engine, Threads};
 use spinball::geometry::{Built, TableFile, TableVisitor};
 use spinball::prelude::*;
 use spinball_plot::cli::Opt;

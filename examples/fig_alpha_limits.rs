@@ -22,7 +22,7 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::Method;
+use spinball_analysis::estimators::Method;
 use spinball_plot::{
     ALPHA_LABEL, Curve, Grid, Job, LAMBDA_LABEL, Legend, LinePlot, Plan, palette, run_figure,
     run_jobs, template, write_curves,

@@ -27,9 +27,10 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::{
-    CHAOS_THRESHOLD, LyapunovEstimate, Measurement, THRESHOLD_BAND, linspace, paper,
-};
+use spinball_analysis::diagnostics;
+use spinball_analysis::estimators::{CHAOS_THRESHOLD, THRESHOLD_BAND};
+use spinball_analysis::precision::Measurement;
+use spinball_analysis::run::{LyapunovEstimate, linspace};
 use spinball_plot::{
     ALPHA_LABEL, Grid, Job, Legend, LinePlot, Plan, Series, measured, palette, paper_markers,
     run_figure, run_jobs, scaled, template, unit_grid, write_curves,
@@ -45,8 +46,8 @@ const TABLES: [(&str, &str); 2] = [
 ];
 /// The paper's fractions at α = 1, in the order of `TABLES`.
 const AT_ONE: [f64; 2] = [
-    paper::STADIUM_CHAOTIC_FRACTION_ALPHA1,
-    paper::SINAI_CHAOTIC_FRACTION_ALPHA1,
+    diagnostics::STADIUM_CHAOTIC_FRACTION_ALPHA1,
+    diagnostics::SINAI_CHAOTIC_FRACTION_ALPHA1,
 ];
 const PCT: f64 = 100.0;
 
@@ -71,7 +72,7 @@ fn main() -> ExitCode {
         let y = "max − min of f_ch over thresholds (pp)";
         let mut spread = LinePlot::with_axes("Width of the threshold band", ALPHA_LABEL, y)
             .hline(
-                PCT * paper::THRESHOLD_BAND_WIDTH,
+                PCT * diagnostics::THRESHOLD_BAND_WIDTH,
                 "paper: < 1 percentage point",
             )
             .legend(Legend::UpperLeft);

@@ -26,7 +26,7 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::linspace;
+use spinball_analysis::run::linspace;
 use spinball_core::Sampler;
 use spinball_plot::{Job, Plan, collision_rate_grid, run_figure, run_jobs, template, write_curves};
 

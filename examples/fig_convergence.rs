@@ -22,7 +22,9 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::{Method, lcn_traces, paper};
+use spinball_analysis::diagnostics;
+use spinball_analysis::estimators::Method;
+use spinball_analysis::precision::lcn_traces;
 use spinball_core::State;
 use spinball_geometry::{DVec2, Table};
 use spinball_plot::{
@@ -48,7 +50,7 @@ fn main() -> ExitCode {
     run_figure(NAME, ABOUT, |args, report| {
         let trace_len: u64 = args.pick(10_000, 100_000, 100_000);
         let ics: u64 = args.pick(20, 2_000, 10_000);
-        let paper_columns = paper::TABLE_I_COLLISIONS.to_vec();
+        let paper_columns = diagnostics::TABLE_I_COLLISIONS.to_vec();
         let quick_columns = vec![500, 1_000, 2_000, 5_000];
         let checkpoints = args.pick(quick_columns, paper_columns.clone(), paper_columns);
 

@@ -14,7 +14,7 @@
 //! | `--paper` | 0, 0.05, …, 1 (21)  | 10⁵ ICs × 5·10⁴ collisions                            |
 //!
 //! Left: `λ · f_ch` ± SEM (error propagated with the covariance of the two
-//! means, `spinball_analysis::dhf_product`), with the constant DH predicts
+//! means, `spinball_analysis::precision::dhf_product`), with the constant DH predicts
 //! (the α = 0 value) dashed. Right: the measured `λ(α)/λ(0)` against the DH
 //! prediction `f_ch(0)/f_ch(α)`.
 //!
@@ -23,7 +23,9 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::{CHAOS_THRESHOLD, LyapunovEstimate, Measurement, dhf_product, normalised};
+use spinball_analysis::estimators::CHAOS_THRESHOLD;
+use spinball_analysis::precision::{Measurement, dhf_product, normalised};
+use spinball_analysis::run::LyapunovEstimate;
 use spinball_plot::{
     ALPHA_LABEL, Grid, Job, LineKind, LinePlot, Plan, Series, measured, palette, run_figure,
     run_jobs, template, unit_grid, write_curves,

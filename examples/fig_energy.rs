@@ -19,7 +19,7 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::energy_conservation;
+use spinball_analysis::diagnostics::energy_conservation;
 use spinball_core::{Billiard, SpinLaw, State};
 use spinball_geometry::{DVec2, Table};
 use spinball_plot::{

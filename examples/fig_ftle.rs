@@ -24,9 +24,9 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::{
-    CHAOS_THRESHOLD, THRESHOLD_BAND, compare_classes, sweep_rows, trajectory_profiles,
-};
+use spinball_analysis::estimators::{CHAOS_THRESHOLD, THRESHOLD_BAND};
+use spinball_analysis::phase_space::{compare_classes, trajectory_profiles};
+use spinball_analysis::report::sweep_rows;
 use spinball_core::{Billiard, Sampler, SpinLaw};
 use spinball_plot::{Grid, ftle_histogram, run_figure, summary_csv, template, trajectories_csv};
 

@@ -26,7 +26,7 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::{FacingFlats, FtleMapOptions, Slice, island_map};
+use spinball_analysis::phase_space::{FacingFlats, FtleMapOptions, Slice, island_map};
 use spinball_core::SpinLaw;
 use spinball_geometry::Table;
 use spinball_plot::cli::Opt;

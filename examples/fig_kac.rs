@@ -24,7 +24,7 @@
 use std::f64::consts::PI;
 use std::process::ExitCode;
 
-use spinball_analysis::{SectionBox, kac_comparison};
+use spinball_analysis::phase_space::{SectionBox, kac_comparison};
 use spinball_core::{Billiard, SpinLaw};
 use spinball_geometry::Table;
 use spinball_plot::{

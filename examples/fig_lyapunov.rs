@@ -24,7 +24,8 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::{linspace, paper};
+use spinball_analysis::diagnostics;
+use spinball_analysis::run::linspace;
 use spinball_plot::{
     ALPHA_LABEL, Curve, Grid, Job, LAMBDA_LABEL, Legend, LinePlot, Plan, palette, paper_markers,
     run_figure, run_jobs, template, unit_grid, write_curves,
@@ -81,7 +82,7 @@ fn main() -> ExitCode {
             .y_label(LAMBDA_LABEL)
             .log_y(true)
             .y_range(1e-7, 1.0)
-            .hline(paper::INTEGRABLE_LAMBDA_BOUND, "")
+            .hline(diagnostics::INTEGRABLE_LAMBDA_BOUND, "")
             .legend(Legend::Hidden);
         for (i, c) in curves.iter().enumerate() {
             linear = linear.series(c.lambda_series().color(palette(i)));
@@ -90,12 +91,12 @@ fn main() -> ExitCode {
         let linear = linear
             .series(paper_markers(
                 "paper: stadium",
-                paper::STADIUM_LAMBDA,
+                diagnostics::STADIUM_LAMBDA,
                 palette(6),
             ))
             .series(paper_markers(
                 "paper: Sinai",
-                paper::SINAI_LAMBDA,
+                diagnostics::SINAI_LAMBDA,
                 palette(4),
             ));
         report.png(

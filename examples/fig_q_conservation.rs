@@ -1,6 +1,6 @@
 //! The paper's conserved-quantity figure (appendix C): `|ΔQ| = |Q_{n+1} − Q_n|`
 //! between consecutive collisions in the stadium (a = 1) at α = 0.5, by what
-//! the two walls have in common (`spinball_analysis::PairClass`): the same
+//! the two walls have in common (`spinball_analysis::diagnostics::PairClass`): the same
 //! cap twice (`ΔQ = 0` to rounding, the circle's angular momentum), facing
 //! flats (opposite oriented tangents, `ΔQ = −2v∥` exactly) and turned
 //! tangents (flat ↔ cap, cap → other cap: `O(1)`). The right panel shows
@@ -21,7 +21,7 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::{q_pair_statistics, wall_statistics};
+use spinball_analysis::diagnostics::{q_pair_statistics, wall_statistics};
 use spinball_core::{Billiard, Sampler, SpinLaw};
 use spinball_geometry::Stadium;
 use spinball_plot::{

@@ -22,7 +22,7 @@
 use std::f64::consts::PI;
 use std::process::ExitCode;
 
-use spinball_analysis::{sampled_sections, spin_slice};
+use spinball_analysis::phase_space::{sampled_sections, spin_slice};
 use spinball_core::{Billiard, Sampler, SpinLaw};
 use spinball_geometry::{
     ArcSegment, Boundary, Built, DVec2, LineSegment, Segment, SegmentTable, Table,

@@ -23,9 +23,12 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use serde_json::json;
-use spinball_analysis::{
-    Measurement, SeparationOptions, SweepRow, paper, phase_space_separation, summarize_separation,
+use spinball_analysis::diagnostics;
+use spinball_analysis::diagnostics::{
+    SeparationOptions, phase_space_separation, summarize_separation,
 };
+use spinball_analysis::precision::Measurement;
+use spinball_analysis::report::SweepRow;
 use spinball_core::{Billiard, SpinLaw};
 use spinball_geometry::Table;
 use spinball_plot::{Csv, Grid, Legend, LinePlot, measured_band, run_figure, template, viridis};
@@ -65,7 +68,10 @@ fn main() -> ExitCode {
             let mut plot = LinePlot::with_axes(title, "collision number n", "⟨ln(δₙ/δ₀)⟩")
                 .y_range(0.0, 20.0)
                 .legend([Legend::UpperLeft, Legend::LowerRight][usize::from(chaotic)])
-                .hline(paper::SEPARATION_LN_RATIO_50, "paper: ln(δ₅₀/δ₀) ≈ 15");
+                .hline(
+                    diagnostics::SEPARATION_LN_RATIO_50,
+                    "paper: ln(δ₅₀/δ₀) ≈ 15",
+                );
             for (k, alpha) in ALPHAS.into_iter().enumerate() {
                 let law = SpinLaw::new(alpha)?;
                 let clock = Instant::now();

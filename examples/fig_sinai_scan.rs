@@ -24,7 +24,8 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::{Measurement, paper};
+use spinball_analysis::diagnostics;
+use spinball_analysis::precision::Measurement;
 use spinball_plot::{
     ALPHA_LABEL, Grid, LAMBDA_LABEL, Legend, LineKind, LinePlot, Plan, Series, measured, palette,
     paper_markers, run_figure, run_scan, unit_grid, write_curves, write_shares,
@@ -81,7 +82,7 @@ fn main() -> ExitCode {
                         .color(color),
                 );
             // The paper's share for this radius, at the right edge.
-            if let Some((_, p)) = paper::SINAI_CURVED_SHARE_BY_RADIUS
+            if let Some((_, p)) = diagnostics::SINAI_CURVED_SHARE_BY_RADIUS
                 .iter()
                 .find(|(r, _)| *r == R[i])
             {
@@ -98,7 +99,7 @@ fn main() -> ExitCode {
         }
         let lambda = lambda.series(paper_markers(
             "paper λ(0): R = 0.3 ≈ 0.13, R = 1.5 ≈ 0.47",
-            paper::SINAI_LAMBDA0_BY_RADIUS.map(|(_, l)| (0.0, l)),
+            diagnostics::SINAI_LAMBDA0_BY_RADIUS.map(|(_, l)| (0.0, l)),
             palette(6),
         ));
         report.png(

@@ -4,7 +4,7 @@
 //! (δ0 = 1e-7), QR after every collision, paper sampler. The exact spectrum
 //! is `(λ, 0, 0, 0, −λ)`; the finite-difference one `(λ, ≈0, ≈0, −λ, λ₅)`
 //! with `λ₅` the collapsed flow direction, set by `δ0` and rounding, not by
-//! the dynamics (see `spinball_analysis::lyapunov_spectrum`).
+//! the dynamics (see `spinball_analysis::estimators::lyapunov_spectrum`).
 //!
 //! ```text
 //! cargo run --release --example fig_spectrum -- [--quick | --paper] [--out DIR] [--seed N]
@@ -24,7 +24,8 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::{Method, SpectrumOptions, spectrum_ensemble};
+use spinball_analysis::estimators::{Method, SpectrumOptions};
+use spinball_analysis::run::spectrum_ensemble;
 use spinball_core::{Billiard, Sampler, SpinLaw};
 use spinball_geometry::Table;
 use spinball_plot::{SpectrumPair, run_figure, spectrum_grid, spectrum_pairs_csv, unit_grid};

@@ -24,7 +24,7 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::normalised;
+use spinball_analysis::precision::normalised;
 use spinball_plot::{
     ALPHA_LABEL, Grid, LAMBDA_LABEL, Legend, LinePlot, Plan, measured, palette, run_figure,
     run_scan, unit_grid, write_curves, write_shares,

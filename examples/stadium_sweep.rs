@@ -15,7 +15,7 @@
 //! Prints a table per method as the points finish, a progress line on
 //! stderr, and writes into `--out` (default `out/stadium_sweep`):
 //! - `stadium_sweep.csv`: one row per method and α (every field of
-//!   `spinball_analysis::SweepRow`);
+//!   `spinball_analysis::report::SweepRow`);
 //! - `stadium_sweep.json`: the same points with each curve's plan, the
 //!   paired difference tangent − fd per α, and each point's error budget
 //!   (SEM, finite-time bias fitted on its first 256 ICs at T/8 … T, method
@@ -28,9 +28,11 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::{
-    BudgetRow, ErrorBudget, Measurement, Method, linspace, paired_difference, paper,
-};
+use spinball_analysis::diagnostics;
+use spinball_analysis::estimators::Method;
+use spinball_analysis::precision::{ErrorBudget, Measurement, paired_difference};
+use spinball_analysis::report::BudgetRow;
+use spinball_analysis::run::linspace;
 use spinball_core::SpinLaw;
 use spinball_plot::{
     ALPHA_LABEL, Grid, Job, LAMBDA_LABEL, LineKind, LinePlot, Plan, Series, measured, palette,
@@ -104,7 +106,11 @@ fn main() -> ExitCode {
         println!("largest SEM/lambda over all points: {:.2}%", 100.0 * worst);
 
         let fd_label = "finite differences (δ₀ = 1e-7) ± SEM";
-        let paper = paper_markers("paper (§IV, Table I)", paper::STADIUM_LAMBDA, palette(6));
+        let paper = paper_markers(
+            "paper (§IV, Table I)",
+            diagnostics::STADIUM_LAMBDA,
+            palette(6),
+        );
         let lambda = LinePlot::with_axes("Stadium a = 1: λ(α)", ALPHA_LABEL, LAMBDA_LABEL)
             .series(fd.series(fd_label, Measurement::lambda))
             .series(

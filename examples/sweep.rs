@@ -22,7 +22,7 @@
 //!                               "regime": "1/T", "method_bias": 2e-5, "total": 0.0021, ...}}]}
 //! ```
 //!
-//! Each point's error budget (`spinball_analysis::ErrorBudget::for_estimate`)
+//! Each point's error budget (`spinball_analysis::precision::ErrorBudget::for_estimate`)
 //! adds to its SEM the finite-time bias, fitted on its first 64 initial
 //! conditions read at T/8, T/4, T/2 and T, and for finite differences the
 //! method bias against a tangent run of those initial conditions; a second
@@ -41,7 +41,8 @@
 
 use std::process::ExitCode;
 
-use spinball_analysis::{BudgetRow, ErrorBudget};
+use spinball_analysis::precision::ErrorBudget;
+use spinball_analysis::report::BudgetRow;
 use spinball_plot::SweepDocument;
 use spinball_plot::cli::SweepArgs;
 

@@ -28,7 +28,9 @@
 use std::process::ExitCode;
 
 use serde_json::json;
-use spinball_analysis::{Budget, Engine, Method, Planner, Reference, work_precision};
+use spinball_analysis::estimators::Method;
+use spinball_analysis::precision::{Budget, Planner, Reference, work_precision};
+use spinball_analysis::run::Engine;
 use spinball_core::SpinLaw;
 use spinball_plot::{
     Csv, Grid, Legend, LineKind, LinePlot, Series, WORK_COLUMNS, bias_vs_t, error_vs_time,

@@ -16,11 +16,15 @@
 //! - [`dynamics`] (`spinball-core`): [`SpinLaw`](dynamics::SpinLaw),
 //!   [`Billiard`](dynamics::Billiard), observers, samplers, the tangent map;
 //! - [`analysis`] (`spinball-analysis`): Lyapunov exponents, spectra,
-//!   FTLE statistics, diagnostics, ensembles;
+//!   FTLE statistics, ensembles, error budgets, phase space and diagnostics,
+//!   each in its group ([`analysis::estimators`], [`analysis::run`],
+//!   [`analysis::precision`], [`analysis::phase_space`],
+//!   [`analysis::diagnostics`], [`analysis::report`]);
 //!
 //! and a [`prelude`] with the names most programs need.
 //!
 //! ```
+//! use spinball::analysis::estimators::{LyapunovOptions, largest_lyapunov};
 //! use spinball::prelude::*;
 //!
 //! // A solid sphere (α = 2/5) in the Bunimovich stadium with a = 1.
@@ -58,20 +62,20 @@ pub use spinball_analysis as analysis;
 pub use spinball_core as dynamics;
 pub use spinball_geometry as geometry;
 
-/// The names most programs need: `use spinball::prelude::*;`.
+/// The names a typical program needs, `use spinball::prelude::*;`: the
+/// tables, the spin law and the billiard, the samplers and their seeded
+/// streams, and an [`Ensemble`](analysis::run::Ensemble) with what it
+/// returns. Everything else is imported from its module, e.g.
+/// `spinball::analysis::estimators::largest_lyapunov`.
 pub mod prelude {
-    pub use spinball_analysis::{
-        AlphaSweep, AnalysisError, Control, Engine, Ensemble, ErrorBudget, FiniteTimeBias,
-        FtleDistribution, FtleMap, FtleMapOptions, Lyapunov, LyapunovEstimate, LyapunovOptions,
-        Measurement, Method, Planner, RunEvent, Section, SectionPoint, Spectrum, SpectrumOptions,
-        Starts, StopReason, StopRule, SweepRow, Threads, largest_lyapunov, lyapunov_spectrum,
-    };
-    pub use spinball_core::{
-        Ball, Billiard, Collision, EnergyMonitor, Observer, Recorder, Sampler, SpinLaw, State,
-        TangentVector, ic_rng,
-    };
-    pub use spinball_geometry::{
-        ArcSegment, Boundary, Circle, DVec2, Hit, LineSegment, Rectangle, Segment, SegmentTable,
-        Shape, Sinai, Stadium, Table,
-    };
+    #[doc(no_inline)]
+    pub use spinball_analysis::AnalysisError;
+    #[doc(no_inline)]
+    pub use spinball_analysis::estimators::Method;
+    #[doc(no_inline)]
+    pub use spinball_analysis::run::{Ensemble, LyapunovEstimate, StopRule};
+    #[doc(no_inline)]
+    pub use spinball_core::{Billiard, Sampler, SpinLaw, State, ic_rng};
+    #[doc(no_inline)]
+    pub use spinball_geometry::{Boundary, Circle, Rectangle, SegmentTable, Sinai, Stadium, Table};
 }

@@ -3,9 +3,9 @@
 use spinball_core::SpinLaw;
 use spinball_geometry::{Stadium, Table};
 
-use crate::ensemble::Ensemble;
-use crate::parallel::Threads;
-use crate::result::LyapunovEstimate;
+use crate::run::Ensemble;
+use crate::run::LyapunovEstimate;
+use crate::run::Threads;
 
 /// `e` at spin `alpha`.
 pub(crate) fn at(e: Ensemble, alpha: f64) -> Ensemble {

@@ -5,10 +5,11 @@
 //! Synthetic series use a fixed-seed generator; tolerances are several
 //! standard errors. Run with `-- --nocapture` to see the numbers.
 
-use spinball_analysis::{
-    BiasLaw, BiasRegime, Budget, Engine, Ensemble, ErrorBudget, FiniteTimeBias, Method, Planner,
-    Reference, StopReason, StopRule, Threads, work_precision,
+use spinball_analysis::estimators::Method;
+use spinball_analysis::precision::{
+    BiasLaw, BiasRegime, Budget, ErrorBudget, FiniteTimeBias, Planner, Reference, work_precision,
 };
+use spinball_analysis::run::{Engine, Ensemble, StopReason, StopRule, Threads};
 use spinball_core::SpinLaw;
 use spinball_geometry::{Circle, Rectangle, Stadium, Table};
 

@@ -8,9 +8,9 @@
 
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
-use spinball_analysis::{
-    AnalysisError, Engine, Ensemble, LyapunovEstimate, Method, Starts, StopReason, Threads,
-};
+use spinball_analysis::AnalysisError;
+use spinball_analysis::estimators::Method;
+use spinball_analysis::run::{Engine, Ensemble, LyapunovEstimate, Starts, StopReason, Threads};
 use spinball_core::{Sampler, SpinLaw, State};
 use spinball_geometry::{
     ArcSegment, Boundary, DVec2, LineSegment, Segment, SegmentTable, Sinai, Stadium,

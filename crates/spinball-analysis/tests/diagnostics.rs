@@ -4,11 +4,13 @@
 
 use std::f64::consts::PI;
 
-use spinball_analysis::{
-    AnalysisError, CollisionRate, LyapunovOptions, Method, SeparationOptions, Threads,
-    TransitionRule, collision_rate_summary, energy_trace, largest_lyapunov, per_collision_exponent,
-    phase_space_separation, wall_statistics, wall_statistics_ensemble,
+use spinball_analysis::AnalysisError;
+use spinball_analysis::diagnostics::{
+    CollisionRate, SeparationOptions, TransitionRule, collision_rate_summary, energy_trace,
+    per_collision_exponent, phase_space_separation, wall_statistics, wall_statistics_ensemble,
 };
+use spinball_analysis::estimators::{LyapunovOptions, Method, largest_lyapunov};
+use spinball_analysis::run::Threads;
 use spinball_core::{Billiard, Collision, Sampler, SpinLaw, State, ic_rng};
 use spinball_geometry::{Boundary, Circle, Sinai, Stadium};
 

@@ -3,9 +3,9 @@
 
 use std::time::Duration;
 
-use spinball_analysis::{
-    Ensemble, LyapunovEstimate, Method, StopReason, StopRule, Threads, ftle_trajectories,
-    trajectory_ftle,
+use spinball_analysis::estimators::Method;
+use spinball_analysis::run::{
+    Ensemble, LyapunovEstimate, StopReason, StopRule, Threads, ftle_trajectories, trajectory_ftle,
 };
 use spinball_core::{Billiard, Sampler, SpinLaw};
 use spinball_geometry::{Boundary, Sinai, Stadium, Table};

@@ -1,6 +1,6 @@
 //! FTLE distribution statistics against hand-computed values.
 
-use spinball_analysis::{CHAOS_THRESHOLD, FtleDistribution, THRESHOLD_BAND};
+use spinball_analysis::estimators::{CHAOS_THRESHOLD, FtleDistribution, THRESHOLD_BAND};
 
 /// Ten exponents: three regular (≤ 0.01), seven chaotic.
 fn sample() -> FtleDistribution {

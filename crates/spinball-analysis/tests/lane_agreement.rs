@@ -31,7 +31,7 @@
 //! disk; counts are not multiples of any lane count (tails). The tables,
 //! laws and starts are those of `crates/spinball-lanes/tests/agreement.rs`.
 
-use spinball_analysis::{
+use spinball_analysis::estimators::{
     LyapunovOptions, Method, SpectrumOptions, largest_lyapunov, lyapunov_spectrum,
 };
 use spinball_core::{

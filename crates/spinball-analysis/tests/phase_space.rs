@@ -7,11 +7,12 @@ use std::f64::consts::PI;
 
 use proptest::prelude::*;
 use rand::Rng;
-use spinball_analysis::{
-    FacingFlats, FtleMapOptions, InvariantMeasure, SectionBox, SectionPoint, Slice, Threads,
-    collision_log, ftle_map, invariant_start, kac_comparison, pair_rotation, section_points,
-    state_on_section,
+use spinball_analysis::diagnostics::collision_log;
+use spinball_analysis::phase_space::{
+    FacingFlats, FtleMapOptions, InvariantMeasure, SectionBox, SectionPoint, Slice, ftle_map,
+    invariant_start, kac_comparison, pair_rotation, section_points, state_on_section,
 };
+use spinball_analysis::run::Threads;
 use spinball_core::{Billiard, SpinLaw, State, ic_rng};
 use spinball_geometry::{Boundary, Circle, DVec2, SegmentTable, Sinai, Stadium};
 

@@ -3,11 +3,13 @@
 //! |ΔQ| populations, separation saturation, the spectrum pairing and energy
 //! over long runs.
 
-use spinball_analysis::{
-    CHAOS_THRESHOLD, Ensemble, Method, PairClass, SeparationOptions, SpectrumOptions, Threads,
-    compare_classes, component_law_energy_history, energy_history, phase_space_separation,
-    q_pair_statistics, spectrum_ensemble, summarize_separation, trajectory_profiles,
+use spinball_analysis::diagnostics::{
+    PairClass, SeparationOptions, component_law_energy_history, energy_history,
+    phase_space_separation, q_pair_statistics, summarize_separation,
 };
+use spinball_analysis::estimators::{CHAOS_THRESHOLD, Method, SpectrumOptions};
+use spinball_analysis::phase_space::{compare_classes, trajectory_profiles};
+use spinball_analysis::run::{Ensemble, Threads, spectrum_ensemble};
 use spinball_core::{Billiard, Sampler, SpinLaw, State};
 use spinball_geometry::{DVec2, Sinai, Stadium};
 

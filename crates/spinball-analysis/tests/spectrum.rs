@@ -4,9 +4,9 @@
 //! Fixed seeds; the test profile is optimised. Each test runs well under a
 //! second of CPU on the reference machine.
 
-use spinball_analysis::{
-    AnalysisError, MAX_QR_INTERVAL, Method, SpectrumOptions, lyapunov_spectrum,
-};
+use spinball_analysis::AnalysisError;
+use spinball_analysis::estimators::{Method, SpectrumOptions, lyapunov_spectrum};
+use spinball_core::MAX_QR_INTERVAL;
 use spinball_core::{
     Ball, Billiard, Collision, Pcg64, Sampler, SpinLaw, State, TangentVector, ic_rng,
 };

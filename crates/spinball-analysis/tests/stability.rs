@@ -4,10 +4,11 @@
 //! and a stuck ball is an error on both engines (F4). Reproducers are the
 //! issue's, literally; every expected number says where it comes from.
 
-use spinball_analysis::{
-    AnalysisError, Engine, Ensemble, LyapunovOptions, Method, SpectrumOptions, largest_lyapunov,
-    lyapunov_spectrum,
+use spinball_analysis::AnalysisError;
+use spinball_analysis::estimators::{
+    LyapunovOptions, Method, SpectrumOptions, largest_lyapunov, lyapunov_spectrum,
 };
+use spinball_analysis::run::{Engine, Ensemble};
 use spinball_core::{
     Billiard, PerturbationError, Sampler, SpinLaw, State, StepError, TangentVector, ic_rng,
 };
@@ -23,8 +24,8 @@ fn fd(delta0: f64) -> Method {
 fn both<B: Boundary + Sync + Clone>(
     e: &Ensemble<B>,
 ) -> (
-    Result<spinball_analysis::LyapunovEstimate, AnalysisError>,
-    Result<spinball_analysis::LyapunovEstimate, AnalysisError>,
+    Result<spinball_analysis::run::LyapunovEstimate, AnalysisError>,
+    Result<spinball_analysis::run::LyapunovEstimate, AnalysisError>,
 ) {
     (
         e.clone().with_engine(Engine::Scalar).run(),
@@ -333,11 +334,11 @@ fn stability_report() {
                     .with_collisions(collisions);
                 let t = e.clone().with_method(Method::Tangent).run();
                 let f = e.with_method(fd(1e-7)).run();
-                let show = |r: &Result<spinball_analysis::LyapunovEstimate, AnalysisError>| match r
-                {
-                    Ok(x) => format!("{:.4e} ± {:.1e}", x.mean, x.sem),
-                    Err(e) => format!("error: {e}"),
-                };
+                let show =
+                    |r: &Result<spinball_analysis::run::LyapunovEstimate, AnalysisError>| match r {
+                        Ok(x) => format!("{:.4e} ± {:.1e}", x.mean, x.sem),
+                        Err(e) => format!("error: {e}"),
+                    };
                 let sigma = match (&t, &f) {
                     (Ok(t), Ok(f)) => {
                         format!("{:+.1}", (f.mean - t.mean) / t.sem.hypot(f.sem))

@@ -2,7 +2,7 @@
 //! and Chan merging against sequential pushing.
 
 use proptest::prelude::*;
-use spinball_analysis::{
+use spinball_analysis::estimators::{
     Accumulator, Histogram, conditional_mean, fraction_above, median, quantile, quantiles,
 };
 

@@ -13,7 +13,8 @@
 //! Run with `cargo test --release -p spinball-analysis --test validation
 //! --features rayon -- --nocapture` to see the numbers.
 
-use spinball_analysis::{CHAOS_THRESHOLD, Ensemble, LyapunovEstimate, Method, Threads};
+use spinball_analysis::estimators::{CHAOS_THRESHOLD, Method};
+use spinball_analysis::run::{Ensemble, LyapunovEstimate, Threads};
 use spinball_core::SpinLaw;
 use spinball_geometry::{Circle, Rectangle, Sinai, Stadium, Table};
 

@@ -7,7 +7,7 @@ use std::ops::Range;
 use std::path::Path;
 
 use serde::{Deserialize, Serialize};
-use spinball_analysis::{LyapunovEstimate, PartialRun, Shard};
+use spinball_analysis::run::{LyapunovEstimate, PartialRun, Shard};
 
 use crate::error::CliError;
 

@@ -7,7 +7,8 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use npyz::WriterBuilder;
-use spinball_analysis::{LyapunovEstimate, csv_string};
+use spinball_analysis::report::csv_string;
+use spinball_analysis::run::LyapunovEstimate;
 
 use crate::documents::{ResultDocument, write_json};
 use crate::error::CliError;

@@ -2,7 +2,8 @@
 //! initial conditions, collisions, method) and how (engine, threads, shard).
 
 use clap::{Args, ValueEnum};
-use spinball_analysis::{CHAOS_THRESHOLD, Engine, Ensemble, Method, PAPER_DELTA0, Shard, Threads};
+use spinball_analysis::estimators::{CHAOS_THRESHOLD, Method, PAPER_DELTA0};
+use spinball_analysis::run::{Engine, Ensemble, Shard, Threads};
 use spinball_core::{Sampler, SpinLaw, SpinLawError};
 use spinball_geometry::Built;
 

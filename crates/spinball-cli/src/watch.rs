@@ -8,7 +8,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
-use spinball_analysis::{Control, RunEvent, RunObserver, TrajectoryStats};
+use spinball_analysis::run::{Control, RunEvent, RunObserver, TrajectoryStats};
 
 use crate::error::CliError;
 

@@ -24,7 +24,7 @@ use crate::state::State;
 
 /// Largest accepted number of collisions between two re-orthonormalisations
 /// (QR steps) of the tangent vectors of a Lyapunov spectrum: the
-/// `qr_interval` of `spinball_analysis::SpectrumOptions` and of
+/// `qr_interval` of `spinball_analysis::estimators::SpectrumOptions` and of
 /// `spinball_lanes::LaneBilliard::spectrum`.
 ///
 /// A chaotic billiard stretches by about `e` per collision on average and by

@@ -183,7 +183,7 @@ impl<B: Boundary> LaneBilliard<B> {
     /// [`Perturbation`] (the table's unit length and each ball's speed, as
     /// powers of two: exactly `delta0` on the paper's tables), shadow along
     /// `directions[i]` (a unit 5-vector, as
-    /// `spinball_analysis::random_direction` draws).
+    /// `spinball_core::random_direction` draws).
     ///
     /// The reference and shadow trajectories are bitwise the scalar ones;
     /// `Σ ln(δ/δ0)` differs from the scalar `largest_lyapunov` by rounding in

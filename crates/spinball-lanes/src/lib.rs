@@ -91,6 +91,3 @@ pub use billiard::{CHUNK, LaneBilliard, has_lane_form};
 pub use error::LanesError;
 pub use isa::{Isa, IsaError};
 pub use outcome::{Flight, SpectrumStretch, Stretch};
-/// Largest accepted `qr_interval` of [`LaneBilliard::spectrum`] (shared with
-/// the scalar `lyapunov_spectrum` of `spinball-analysis`).
-pub use spinball_core::MAX_QR_INTERVAL;

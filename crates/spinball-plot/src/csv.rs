@@ -1,6 +1,6 @@
 //! CSV text built row by row, for the figure data that is not a list of
-//! [`SweepRow`](spinball_analysis::SweepRow)s (those have their own writer,
-//! [`write_csv`](spinball_analysis::write_csv)).
+//! [`SweepRow`](spinball_analysis::report::SweepRow)s (those have their own writer,
+//! [`write_csv`](spinball_analysis::report::write_csv)).
 //!
 //! Every figure writes its numbers next to its picture; the rules for a
 //! field (quoting, numbers) belong in one place rather than in a format

@@ -25,9 +25,11 @@
 use std::fmt;
 
 use serde::Serialize;
-use spinball_analysis::{
-    AlphaSweep, AnalysisError, Control, Ensemble, LyapunovEstimate, Measurement, RunEvent,
-    RunObserver, SweepRow,
+use spinball_analysis::AnalysisError;
+use spinball_analysis::precision::Measurement;
+use spinball_analysis::report::SweepRow;
+use spinball_analysis::run::{
+    AlphaSweep, Control, Ensemble, LyapunovEstimate, RunEvent, RunObserver,
 };
 use spinball_core::SpinLaw;
 use spinball_geometry::{Table, TableSpecError};
@@ -125,7 +127,7 @@ impl Curve {
         plan: Plan,
         estimates: Vec<LyapunovEstimate>,
     ) -> Result<Curve, AnalysisError> {
-        let rows = spinball_analysis::sweep_rows(&estimates)?;
+        let rows = spinball_analysis::report::sweep_rows(&estimates)?;
         Ok(Curve {
             label: label.into(),
             plan,
@@ -284,7 +286,7 @@ struct CurvesBody<'a, E: ?Sized> {
     extra: &'a E,
 }
 
-/// Write every curve's rows to `<stem>.csv` ([`spinball_analysis::CSV_HEADER`]
+/// Write every curve's rows to `<stem>.csv` ([`spinball_analysis::report::CSV_HEADER`]
 /// columns) and the JSON document `<stem>.json`: the report's header, the
 /// total wall time, `series` (label, plan and points of each curve) and the
 /// fields of `extra` (a struct or map; `&()` for none).
@@ -344,7 +346,7 @@ mod tests {
         let t = template(&args, "stadium:a=1").unwrap();
         assert_eq!(
             (t.seed, t.threads),
-            (3, spinball_analysis::Threads::Fixed(1))
+            (3, spinball_analysis::run::Threads::Fixed(1))
         );
         assert!(template(&args, "oval").is_err());
         let jobs = vec![
@@ -352,7 +354,7 @@ mod tests {
             Job::new(
                 "b",
                 &plan,
-                t.with_method(spinball_analysis::Method::Tangent),
+                t.with_method(spinball_analysis::estimators::Method::Tangent),
                 &[0.5],
             )
             .unwrap(),

@@ -8,7 +8,7 @@
 //! bit) cannot be drawn on a log axis; they are drawn on a floor line at
 //! [`ENERGY_FLOOR`].
 
-use spinball_analysis::{EnergyConservation, EnergyHistory, EnergyTrace};
+use spinball_analysis::diagnostics::{EnergyConservation, EnergyHistory, EnergyTrace};
 
 use crate::RGBColor;
 use crate::colormap::viridis;
@@ -135,7 +135,7 @@ impl EnergyPanels {
 mod tests {
     use super::*;
     use crate::plot::Plot;
-    use spinball_analysis::energy_conservation;
+    use spinball_analysis::diagnostics::energy_conservation;
     use spinball_core::{Billiard, SpinLaw, State};
     use spinball_geometry::{DVec2, Stadium};
 

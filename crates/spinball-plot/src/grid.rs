@@ -7,7 +7,7 @@ use crate::colormap::viridis;
 use crate::error::PlotError;
 use crate::font;
 use crate::format::format_tick;
-use crate::histogram::Histogram;
+use crate::histogram::HistogramPlot;
 use crate::lines::LinePlot;
 use crate::phase_plot::{MapPlot, Scatter3d};
 use crate::plot::{Plot, titled};
@@ -22,7 +22,7 @@ pub enum Panel {
     /// Curves.
     Lines(LinePlot),
     /// A histogram.
-    Histogram(Histogram),
+    Histogram(HistogramPlot),
     /// A nested grid.
     Grid(Grid),
     /// A map of values over a plane.
@@ -43,8 +43,8 @@ impl From<LinePlot> for Panel {
         Panel::Lines(p)
     }
 }
-impl From<Histogram> for Panel {
-    fn from(p: Histogram) -> Self {
+impl From<HistogramPlot> for Panel {
+    fn from(p: HistogramPlot) -> Self {
         Panel::Histogram(p)
     }
 }

@@ -14,7 +14,7 @@ use crate::lines::{
 use crate::plot::{Plot, inner_size, titled};
 use crate::style::Style;
 
-/// A vertical line across a [`Histogram`] at `x`, with a legend entry.
+/// A vertical line across a [`HistogramPlot`] at `x`, with a legend entry.
 #[derive(Debug, Clone)]
 pub struct Marker {
     label: String,
@@ -48,14 +48,14 @@ impl Marker {
 /// A histogram of values with optional marker lines.
 ///
 /// Non-finite values are skipped; values outside an explicit
-/// [`range`](Histogram::range) are not counted. With
-/// [`density`](Histogram::density) the bars are normalised so that their area
+/// [`range`](HistogramPlot::range) are not counted. With
+/// [`density`](HistogramPlot::density) the bars are normalised so that their area
 /// is the share of values in the range.
 ///
 /// ```no_run
-/// use spinball_plot::{Histogram, LineKind, Marker, Plot};
+/// use spinball_plot::{HistogramPlot, LineKind, Marker, Plot};
 /// let ftle = vec![0.41, 0.43, 0.44, 0.02, 0.42, f64::NAN, 0.45];
-/// Histogram::new(ftle)
+/// HistogramPlot::new(ftle)
 ///     .bins(40)
 ///     .density(true)
 ///     .x_label("FTLE λ (1/time)")
@@ -65,7 +65,7 @@ impl Marker {
 /// # Ok::<(), spinball_plot::PlotError>(())
 /// ```
 #[derive(Debug, Clone)]
-pub struct Histogram {
+pub struct HistogramPlot {
     values: Vec<f64>,
     bins: usize,
     range: Option<(f64, f64)>,
@@ -80,10 +80,10 @@ pub struct Histogram {
     legend: Legend,
 }
 
-impl Histogram {
+impl HistogramPlot {
     /// A histogram of `values` with 50 bins over their range.
     pub fn new(values: impl IntoIterator<Item = f64>) -> Self {
-        Histogram {
+        HistogramPlot {
             values: values.into_iter().collect(),
             bins: 50,
             range: None,
@@ -207,7 +207,7 @@ impl Histogram {
     }
 }
 
-impl Plot for Histogram {
+impl Plot for HistogramPlot {
     fn validate(&self) -> Result<(), PlotError> {
         self.heights().map(|_| ())
     }
@@ -344,7 +344,7 @@ mod tests {
 
     #[test]
     fn counts_and_density() {
-        let h = Histogram::new([0.0, 0.1, 0.9, 1.0, f64::NAN, f64::INFINITY]).bins(2);
+        let h = HistogramPlot::new([0.0, 0.1, 0.9, 1.0, f64::NAN, f64::INFINITY]).bins(2);
         let ((lo, hi), c) = h.heights().unwrap();
         assert_eq!((lo, hi), (0.0, 1.0));
         assert_eq!(c, vec![2.0, 2.0]);
@@ -356,18 +356,18 @@ mod tests {
     #[test]
     fn bad_input_is_an_error() {
         assert!(matches!(
-            Histogram::new([f64::NAN]).heights(),
+            HistogramPlot::new([f64::NAN]).heights(),
             Err(PlotError::EmptyData(_))
         ));
         assert!(matches!(
-            Histogram::new([1.0]).bins(0).heights(),
+            HistogramPlot::new([1.0]).bins(0).heights(),
             Err(PlotError::Invalid { .. })
         ));
         assert!(matches!(
-            Histogram::new([1.0]).range(2.0, 3.0).heights(),
+            HistogramPlot::new([1.0]).range(2.0, 3.0).heights(),
             Err(PlotError::EmptyData(_))
         ));
         // A single value still gets a visible range.
-        assert!(Histogram::new([1.0]).heights().is_ok());
+        assert!(HistogramPlot::new([1.0]).heights().is_ok());
     }
 }

@@ -2,7 +2,7 @@
 //! the predicted cells outlined, and a CSV row comparing the map, the
 //! paper's sampler and the prediction ([`IslandMap`]).
 
-use spinball_analysis::{IslandMap, Slice};
+use spinball_analysis::phase_space::{IslandMap, Slice};
 
 use crate::csv::{Csv, optional};
 use crate::phase_plot::MapPlot;
@@ -77,7 +77,8 @@ pub fn island_panel(table: &str, island: &IslandMap, ftle_max: f64) -> MapPlot {
 mod tests {
     use super::*;
     use crate::plot::Plot;
-    use spinball_analysis::{FacingFlats, FtleMapOptions, Threads, island_map};
+    use spinball_analysis::phase_space::{FacingFlats, FtleMapOptions, island_map};
+    use spinball_analysis::run::Threads;
     use spinball_core::SpinLaw;
     use spinball_geometry::Table;
 

@@ -2,11 +2,11 @@
 //! per-orbit histogram of mean return time over `1/μ(A)`, the mean ratio
 //! against α, and the CSV rows per comparison and per orbit.
 
-use spinball_analysis::KacComparison;
+use spinball_analysis::phase_space::KacComparison;
 
 use crate::RGBColor;
 use crate::csv::{Csv, optional};
-use crate::histogram::{Histogram, Marker};
+use crate::histogram::{HistogramPlot, Marker};
 use crate::lines::Series;
 
 /// The columns of [`kac_row`].
@@ -68,8 +68,8 @@ pub fn kac_orbit_rows(csv: &mut Csv, table: &str, kac: &KacComparison) {
 /// The returning orbits' ratios to Kac's in 30 bins over `[0, 2]` with a
 /// line at 1, titled `table`, α and how many orbits never came back.
 #[must_use]
-pub fn kac_histogram(table: &str, kac: &KacComparison, color: RGBColor) -> Histogram {
-    Histogram::new(kac.orbit_ratios())
+pub fn kac_histogram(table: &str, kac: &KacComparison, color: RGBColor) -> HistogramPlot {
+    HistogramPlot::new(kac.orbit_ratios())
         .bins(30)
         .range(0.0, 2.0)
         .title(format!(
@@ -97,7 +97,8 @@ pub fn kac_ratio_series(label: &str, runs: &[KacComparison]) -> Series {
 mod tests {
     use super::*;
     use crate::plot::Plot;
-    use spinball_analysis::{SectionBox, Threads, kac_comparison};
+    use spinball_analysis::phase_space::{SectionBox, kac_comparison};
+    use spinball_analysis::run::Threads;
     use spinball_core::{Billiard, SpinLaw};
     use spinball_geometry::Stadium;
 

@@ -1,10 +1,10 @@
 //! The paper's figure of single-trajectory LCN traces (App. A.1): per
 //! table a log–log panel of the running exponent λ(t) at several α (from
-//! [`lcn_traces`](spinball_analysis::lcn_traces)), with a `1/t` guide on
+//! [`lcn_traces`](spinball_analysis::precision::lcn_traces)), with a `1/t` guide on
 //! the integrable tables; and their CSV rows and JSON records.
 
 use serde::Serialize;
-use spinball_analysis::LcnTrace;
+use spinball_analysis::precision::LcnTrace;
 
 use crate::RGBColor;
 use crate::colormap::viridis;
@@ -76,7 +76,8 @@ pub fn lcn_trace_panel(title: &str, traces: &[(f64, LcnTrace)], one_over_t: bool
 mod tests {
     use super::*;
     use crate::plot::Plot;
-    use spinball_analysis::{Method, lcn_traces};
+    use spinball_analysis::estimators::Method;
+    use spinball_analysis::precision::lcn_traces;
     use spinball_core::State;
     use spinball_geometry::{Circle, DVec2};
 

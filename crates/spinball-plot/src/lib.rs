@@ -8,7 +8,7 @@
 //! - [`LinePlot`]: curves of [`Series`] with error bars, shaded min–max bands,
 //!   reference lines, a legend and linear or logarithmic axes (λ(α) curves,
 //!   energy traces, convergence traces);
-//! - [`Histogram`]: a histogram with vertical [`Marker`] lines (mean, median,
+//! - [`HistogramPlot`]: a histogram with vertical [`Marker`] lines (mean, median,
 //!   conditional mean) and a legend;
 //! - [`MapPlot`] and [`Scatter3d`]: phase space, a value per grid cell (an
 //!   FTLE map) or per point (a section coloured by spin) with outlined
@@ -36,7 +36,7 @@
 //!   [`collision_rate_grid`] (ν and λ/ν against α) and
 //!   [`spectrum_grid`] (the Lyapunov spectrum against α);
 //! - [`measured`] and [`paper_markers`]: series of values ± SEM and of the
-//!   paper's numbers ([`spinball_analysis::paper`]); [`table_i_markdown`]
+//!   paper's numbers ([`spinball_analysis::diagnostics`]); [`table_i_markdown`]
 //!   and friends ([`table_i_rows`], [`table_i_grid`]) set our convergence
 //!   table beside the paper's Table I.
 //!
@@ -126,7 +126,7 @@ pub use error::PlotError;
 pub use figure::{BoxError, run_figure, run_figure_with};
 pub use format::format_tick;
 pub use grid::{Colorbar, Grid, Panel};
-pub use histogram::{Histogram, Marker};
+pub use histogram::{HistogramPlot, Marker};
 pub use island_figure::{ISLAND_COLUMNS, island_panel, island_row};
 pub use kac_figure::{
     KAC_COLUMNS, KAC_ORBIT_COLUMNS, kac_histogram, kac_orbit_rows, kac_ratio_series, kac_row,

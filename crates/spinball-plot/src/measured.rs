@@ -9,18 +9,19 @@
 //! (large markers, no line).
 //!
 //! ```
-//! use spinball_analysis::{Measurement, paper};
+//! use spinball_analysis::diagnostics;
+//! use spinball_analysis::precision::Measurement;
 //! use spinball_plot::{LinePlot, measured, paper_markers, palette, ALPHA_LABEL};
 //!
 //! let ours = [(0.0, Measurement::new(0.430, 0.002)), (1.0, Measurement::new(0.147, 0.002))];
 //! let plot = LinePlot::new()
 //!     .x_label(ALPHA_LABEL)
 //!     .series(measured("stadium ± SEM", ours))
-//!     .series(paper_markers("paper", paper::STADIUM_LAMBDA, palette(6)));
+//!     .series(paper_markers("paper", diagnostics::STADIUM_LAMBDA, palette(6)));
 //! # let _ = plot;
 //! ```
 
-use spinball_analysis::Measurement;
+use spinball_analysis::precision::Measurement;
 
 use crate::RGBColor;
 use crate::lines::Series;

@@ -20,7 +20,8 @@
 use std::fmt;
 
 use serde::Serialize;
-use spinball_analysis::{AlphaSweep, AnalysisError, Ensemble, StopRule};
+use spinball_analysis::AnalysisError;
+use spinball_analysis::run::{AlphaSweep, Ensemble, StopRule};
 use spinball_geometry::Boundary;
 
 /// The size of every ensemble of one λ(α) curve.

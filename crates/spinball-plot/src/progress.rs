@@ -8,7 +8,7 @@
 //! and stdout (the results) stays free of it.
 //!
 //! ```
-//! use spinball_analysis::{AlphaSweep, Ensemble};
+//! use spinball_analysis::run::{AlphaSweep, Ensemble};
 //! use spinball_core::SpinLaw;
 //! use spinball_geometry::Stadium;
 //! use spinball_plot::Progress;
@@ -28,7 +28,7 @@
 use std::io::{IsTerminal, Stderr, Write};
 use std::time::Instant;
 
-use spinball_analysis::{BatchProgress, Control, RunEvent, RunObserver};
+use spinball_analysis::run::{BatchProgress, Control, RunEvent, RunObserver};
 
 /// Width of the bar in characters.
 const BAR: usize = 24;
@@ -186,7 +186,7 @@ mod tests {
     fn batch(ics_done: u64) -> BatchProgress {
         // BatchProgress is non-exhaustive: take a real one from a run.
         let mut seen = None;
-        let ensemble = spinball_analysis::Ensemble::new(
+        let ensemble = spinball_analysis::run::Ensemble::new(
             spinball_geometry::Stadium::new(1.0).unwrap(),
             spinball_core::SpinLaw::new(0.5).unwrap(),
         )

@@ -6,7 +6,7 @@
 //! `|ΔQ|` is binned in `log10`; exact zeros cannot be drawn on that axis and
 //! are drawn at [`Q_ZERO_AT`] instead, apart from the rest.
 
-use spinball_analysis::{PairClass, QPairStatistics};
+use spinball_analysis::diagnostics::{PairClass, QPairStatistics};
 
 use crate::RGBColor;
 use crate::csv::Csv;
@@ -126,7 +126,7 @@ pub fn q_medians(q: &QPairStatistics) -> Vec<(&'static str, Option<f64>)> {
 mod tests {
     use super::*;
     use crate::plot::Plot;
-    use spinball_analysis::q_pair_statistics;
+    use spinball_analysis::diagnostics::q_pair_statistics;
     use spinball_core::{Billiard, Sampler, SpinLaw};
     use spinball_geometry::Stadium;
 

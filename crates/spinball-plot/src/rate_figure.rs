@@ -7,7 +7,7 @@
 //! On the log axis α = 0 has no place; its values are drawn at half the
 //! smallest α > 0, at the left edge.
 
-use spinball_analysis::initial_mean_speed;
+use spinball_analysis::diagnostics::initial_mean_speed;
 use spinball_core::Sampler;
 
 use crate::RGBColor;
@@ -105,7 +105,7 @@ mod tests {
     use super::*;
     use crate::plan::Plan;
     use crate::plot::Plot;
-    use spinball_analysis::{AlphaSweep, Ensemble, Threads};
+    use spinball_analysis::run::{AlphaSweep, Ensemble, Threads};
     use spinball_core::SpinLaw;
     use spinball_geometry::Table;
 

@@ -18,7 +18,8 @@
 use std::fmt;
 
 use serde::Serialize;
-use spinball_analysis::{Measurement, initial_mean_speed, liouville_collision_rate, rate_summary};
+use spinball_analysis::diagnostics::{initial_mean_speed, liouville_collision_rate, rate_summary};
+use spinball_analysis::precision::Measurement;
 use spinball_core::Sampler;
 use spinball_geometry::Table;
 
@@ -138,7 +139,7 @@ pub fn relative_spread(points: &[(f64, Measurement)], from: f64) -> f64 {
 mod tests {
     use super::*;
     use crate::plan::Plan;
-    use spinball_analysis::{AlphaSweep, Ensemble, Threads};
+    use spinball_analysis::run::{AlphaSweep, Ensemble, Threads};
     use spinball_core::SpinLaw;
     use spinball_geometry::Boundary;
 

@@ -9,7 +9,7 @@
 //! put together by hand.
 //!
 //! ```no_run
-//! use spinball_analysis::Measurement;
+//! use spinball_analysis::precision::Measurement;
 //! use spinball_plot::cli::FigureArgs;
 //! use spinball_plot::{Csv, Report};
 //!
@@ -28,7 +28,7 @@ use std::time::Instant;
 
 use npyz::WriterBuilder;
 use serde::Serialize;
-use spinball_analysis::{SweepRow, write_csv};
+use spinball_analysis::report::{SweepRow, write_csv};
 
 use crate::cli::FigureArgs;
 use crate::csv::Csv;
@@ -142,7 +142,7 @@ impl Report {
         self.text(file, csv.as_str())
     }
 
-    /// Write `rows` to `file` as CSV ([`spinball_analysis::CSV_HEADER`]
+    /// Write `rows` to `file` as CSV ([`spinball_analysis::report::CSV_HEADER`]
     /// columns).
     ///
     /// # Errors
@@ -261,11 +261,11 @@ mod tests {
         let mut r = report(&dir);
         #[derive(Serialize)]
         struct Body {
-            lambda: spinball_analysis::Measurement,
+            lambda: spinball_analysis::precision::Measurement,
             alphas: Vec<f64>,
         }
         let body = Body {
-            lambda: spinball_analysis::Measurement::new(0.25, 0.01),
+            lambda: spinball_analysis::precision::Measurement::new(0.25, 0.01),
             alphas: vec![0.0, 1.0],
         };
         let path = r.json("a.json", &body).unwrap();
@@ -313,7 +313,7 @@ mod tests {
             std::fs::read_to_string(dir.join("rows.csv"))
                 .unwrap()
                 .trim_end(),
-            spinball_analysis::CSV_HEADER
+            spinball_analysis::report::CSV_HEADER
         );
         let s = r.summary();
         assert!(

@@ -9,7 +9,7 @@
 //! analysis types rather than by hand in each example.
 //!
 //! ```
-//! use spinball_analysis::Ensemble;
+//! use spinball_analysis::run::Ensemble;
 //! use spinball_core::SpinLaw;
 //! use spinball_geometry::Stadium;
 //! use spinball_plot::{Plot, ftle_histogram};
@@ -22,12 +22,13 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use spinball_analysis::{AnalysisError, LyapunovEstimate, SpectrumEstimate};
+use spinball_analysis::AnalysisError;
+use spinball_analysis::run::{LyapunovEstimate, SpectrumEstimate};
 
 use crate::RGBColor;
 use crate::colormap::palette;
 use crate::grid::Grid;
-use crate::histogram::{Histogram, Marker};
+use crate::histogram::{HistogramPlot, Marker};
 use crate::lines::{Legend, LineKind, LinePlot, Series};
 
 /// Subscripts of the five exponents.
@@ -57,7 +58,7 @@ const SPECTRUM_VIEWS: [(&str, &[usize], bool); 4] = [
 ///
 /// # Errors
 /// Only for an estimate whose trajectories were emptied or altered.
-pub fn ftle_histogram(estimate: &LyapunovEstimate) -> Result<Histogram, AnalysisError> {
+pub fn ftle_histogram(estimate: &LyapunovEstimate) -> Result<HistogramPlot, AnalysisError> {
     let e = estimate;
     let ftle = e.ftle()?;
     let title = format!(
@@ -69,7 +70,7 @@ pub fn ftle_histogram(estimate: &LyapunovEstimate) -> Result<Histogram, Analysis
     let median = Marker::new(format!("median {:.3}", e.median), e.median)
         .color(RGBColor(0, 90, 200))
         .kind(LineKind::Dashed);
-    let mut h = Histogram::new(ftle.exponents().iter().copied())
+    let mut h = HistogramPlot::new(ftle.exponents().iter().copied())
         .bins(60)
         .density(true)
         .title(title)
@@ -152,7 +153,10 @@ pub fn spectrum_grid(title: impl Into<String>, tables: &[(&str, &[SpectrumPair])
 /// count)` points from its first to its last occupied bin; the underflow
 /// (exact zeros and values below the bins) as a separate point at
 /// `zero_at`, kept apart from the rest by a break in the line.
-pub fn log_counts(histogram: &spinball_analysis::Histogram, zero_at: f64) -> Vec<(f64, f64)> {
+pub fn log_counts(
+    histogram: &spinball_analysis::estimators::Histogram,
+    zero_at: f64,
+) -> Vec<(f64, f64)> {
     let counts = histogram.counts();
     let mut pts = Vec::new();
     if histogram.underflow() > 0 {
@@ -176,7 +180,8 @@ mod tests {
     #[test]
     fn spectra_against_alpha() {
         use crate::plot::Plot;
-        use spinball_analysis::{Method, SpectrumOptions, Threads, spectrum_ensemble};
+        use spinball_analysis::estimators::{Method, SpectrumOptions};
+        use spinball_analysis::run::{Threads, spectrum_ensemble};
         use spinball_core::{Billiard, Sampler, SpinLaw};
         let run = |alpha| {
             let billiard = Billiard::new(
@@ -213,7 +218,7 @@ mod tests {
 
     #[test]
     fn log_counts_set_zeros_apart() {
-        let mut h = spinball_analysis::Histogram::new(-4.0, 0.0, 4).unwrap();
+        let mut h = spinball_analysis::estimators::Histogram::new(-4.0, 0.0, 4).unwrap();
         for x in [f64::NEG_INFINITY, -10.0, -2.5, -2.2, -0.5] {
             h.push(x);
         }
@@ -222,7 +227,7 @@ mod tests {
         assert!(pts[1].0.is_nan() && pts[1].1.is_nan());
         // Bins -3..-2 (two values), -2..-1 (none), -1..0 (one).
         assert_eq!(&pts[2..], &[(-2.5, 2.0), (-1.5, 0.0), (-0.5, 1.0)]);
-        let empty = spinball_analysis::Histogram::new(-4.0, 0.0, 4).unwrap();
+        let empty = spinball_analysis::estimators::Histogram::new(-4.0, 0.0, 4).unwrap();
         assert!(log_counts(&empty, -5.0).is_empty());
     }
 }

@@ -8,7 +8,7 @@
 //! per-trajectory FTLEs writes them the same way.
 //!
 //! ```
-//! use spinball_analysis::Histogram;
+//! use spinball_analysis::estimators::Histogram;
 //! use spinball_plot::histograms_csv;
 //!
 //! let mut h = Histogram::new(0.0, 2.0, 2)?;
@@ -18,10 +18,10 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use spinball_analysis::{
-    DeltaQPopulation, Histogram, LyapunovEstimate, PairClass, QPair, QPairStatistics,
-    SpectrumEstimate, SweepRow,
-};
+use spinball_analysis::diagnostics::{DeltaQPopulation, PairClass, QPair, QPairStatistics};
+use spinball_analysis::estimators::Histogram;
+use spinball_analysis::report::SweepRow;
+use spinball_analysis::run::{LyapunovEstimate, SpectrumEstimate};
 
 use crate::csv::{Csv, optional};
 use crate::result_plots::SpectrumPair;
@@ -181,7 +181,8 @@ pub fn histograms_csv(axis: &str, named: &[(&str, &Histogram)]) -> Csv {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use spinball_analysis::{Ensemble, Threads, sweep_rows};
+    use spinball_analysis::report::sweep_rows;
+    use spinball_analysis::run::{Ensemble, Threads};
     use spinball_core::SpinLaw;
     use spinball_geometry::Stadium;
 
@@ -209,7 +210,8 @@ mod tests {
 
     #[test]
     fn spectrum_table() {
-        use spinball_analysis::{Method, SpectrumOptions, spectrum_ensemble};
+        use spinball_analysis::estimators::{Method, SpectrumOptions};
+        use spinball_analysis::run::spectrum_ensemble;
         use spinball_core::{Billiard, Sampler};
         let billiard = Billiard::new(Stadium::new(1.0).unwrap(), SpinLaw::new(0.5).unwrap());
         let options = SpectrumOptions::new(200, Method::Tangent);
@@ -262,7 +264,7 @@ mod tests {
 
     #[test]
     fn q_tables() {
-        use spinball_analysis::q_pair_statistics;
+        use spinball_analysis::diagnostics::q_pair_statistics;
         use spinball_core::{Billiard, Sampler};
         let billiard = Billiard::new(Stadium::new(1.0).unwrap(), SpinLaw::new(0.5).unwrap());
         let start = Sampler::Paper.initial_state(billiard.table(), billiard.law(), 1, 0);

@@ -21,7 +21,8 @@
 //! ```
 
 use serde::Serialize;
-use spinball_analysis::{CurvedShare, Threads, curved_share};
+use spinball_analysis::diagnostics::{CurvedShare, curved_share};
+use spinball_analysis::run::Threads;
 use spinball_core::{Sampler, SpinLaw};
 use spinball_geometry::Table;
 

@@ -6,7 +6,7 @@
 //! along `s`, `sin θ` in `[−1, 1]`, spin over the shell's range), so they
 //! are set here once.
 
-use spinball_analysis::SectionPoint;
+use spinball_analysis::phase_space::SectionPoint;
 
 use crate::csv::Csv;
 use crate::phase_plot::{MapPlot, Scatter3d};
@@ -70,7 +70,8 @@ pub fn section_cloud<'a>(
 mod tests {
     use super::*;
     use crate::plot::Plot;
-    use spinball_analysis::{Threads, sampled_sections};
+    use spinball_analysis::phase_space::sampled_sections;
+    use spinball_analysis::run::Threads;
     use spinball_core::{Billiard, Sampler, SpinLaw};
     use spinball_geometry::{Boundary, Stadium};
 

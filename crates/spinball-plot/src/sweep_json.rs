@@ -22,7 +22,9 @@
 use std::path::{Path, PathBuf};
 
 use serde::Serialize;
-use spinball_analysis::{BudgetRow, CHAOS_THRESHOLD, LyapunovEstimate, Method};
+use spinball_analysis::estimators::{CHAOS_THRESHOLD, Method};
+use spinball_analysis::report::BudgetRow;
+use spinball_analysis::run::LyapunovEstimate;
 
 use crate::cli::SweepArgs;
 use crate::error::PlotError;

@@ -1,12 +1,12 @@
 //! Our Table I beside the paper's: ensemble-averaged λ ± SEM after several
 //! numbers of collisions, as CSV, Markdown (the paper's `mean(SEM)`
 //! notation), JSON records and a plot of the differences, each entry next
-//! to the paper's ([`spinball_analysis::paper::TABLE_I`]).
+//! to the paper's ([`spinball_analysis::diagnostics::TABLE_I`]).
 //!
 //! The paper's convergence table is the one result a reader checks digit by
 //! digit, so the comparison is written in the paper's own notation and
 //! kept out of the example, which only runs the ensembles
-//! ([`convergence_estimates`](spinball_analysis::convergence_estimates)).
+//! ([`convergence_estimates`](spinball_analysis::precision::convergence_estimates)).
 //!
 //! ```
 //! use spinball_plot::table_i_paper;
@@ -18,10 +18,9 @@ use std::fmt::{self, Write as _};
 use std::time::Instant;
 
 use serde::Serialize;
-use spinball_analysis::{
-    AnalysisError, Ensemble, LyapunovEstimate, Measurement, convergence_estimates, format_mean_sem,
-    paper,
-};
+use spinball_analysis::precision::{Measurement, convergence_estimates, format_mean_sem};
+use spinball_analysis::run::{Ensemble, LyapunovEstimate};
+use spinball_analysis::{AnalysisError, diagnostics};
 
 use spinball_core::SpinLaw;
 
@@ -37,7 +36,7 @@ use crate::measured::measured;
 /// One table at one α: our estimates after each number of collisions.
 #[derive(Debug, Clone)]
 pub struct TableIRow {
-    /// Table spec (`stadium:a=1`), as in [`paper::TableIEntry::table`].
+    /// Table spec (`stadium:a=1`), as in [`diagnostics::TableIEntry::table`].
     pub table: String,
     /// Name in the Markdown table (`Stadium`).
     pub name: String,
@@ -138,16 +137,16 @@ pub fn table_i_grid(rows: &[TableIRow], tables: &[(&str, &str)], ics: u64) -> Gr
 
 /// The paper's entry as printed (`0.183(1)`), if it lists one.
 pub fn table_i_paper(table: &str, alpha: f64, collisions: u64) -> Option<String> {
-    paper::table_i(table, alpha, collisions)
-        .map(|m| format_mean_sem(m.value, m.sem, paper::TABLE_I_DECIMALS))
+    diagnostics::table_i(table, alpha, collisions)
+        .map(|m| format_mean_sem(m.value, m.sem, diagnostics::TABLE_I_DECIMALS))
 }
 
 /// The paper's value to compare with after `collisions` collisions: its
 /// entry there, or (for a length it does not list) its longest column.
 pub fn table_i_reference(table: &str, alpha: f64, collisions: u64) -> Option<f64> {
-    let longest = paper::TABLE_I_COLLISIONS[paper::TABLE_I_COLLISIONS.len() - 1];
-    paper::table_i(table, alpha, collisions)
-        .or_else(|| paper::table_i(table, alpha, longest))
+    let longest = diagnostics::TABLE_I_COLLISIONS[diagnostics::TABLE_I_COLLISIONS.len() - 1];
+    diagnostics::table_i(table, alpha, collisions)
+        .or_else(|| diagnostics::table_i(table, alpha, longest))
         .map(|m| m.value)
 }
 
@@ -198,7 +197,7 @@ pub fn table_i_markdown(rows: &[TableIRow], ics: u64, seed: u64) -> String {
          ours: {ics} ICs per entry, seed {seed}, finite differences δ0 = 1e-7, paper sampler; \
          paper: {} ICs per entry.\n\n\
          | Geometry | α | source | {} |\n|---|---|---|{}\n",
-        paper::TABLE_I_ICS,
+        diagnostics::TABLE_I_ICS,
         header.join(" | "),
         "---|".repeat(checkpoints.len())
     );
@@ -310,7 +309,7 @@ impl From<&TableIRow> for TableIRecord {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use spinball_analysis::Threads;
+    use spinball_analysis::run::Threads;
 
     fn row() -> TableIRow {
         let table: spinball_geometry::Table = "stadium:a=1".parse().unwrap();

@@ -3,7 +3,9 @@
 //! to a target, and the CSV rows of a work–precision set (the
 //! `work_precision` example and docs/ACCURACY.md).
 
-use spinball_analysis::{Engine, Method, Planner, Reference, WorkPoint};
+use spinball_analysis::estimators::Method;
+use spinball_analysis::precision::{Planner, Reference, WorkPoint};
+use spinball_analysis::run::Engine;
 
 use crate::colormap::palette;
 use crate::csv::{Csv, optional};

@@ -4,7 +4,7 @@ use std::path::{Path, PathBuf};
 
 use spinball_geometry::{DVec2, Sinai, Stadium, Table};
 use spinball_plot::{
-    Colorbar, Grid, Histogram, LineKind, LinePlot, Marker, Plot, PlotError, Series, TablePlot,
+    Colorbar, Grid, HistogramPlot, LineKind, LinePlot, Marker, Plot, PlotError, Series, TablePlot,
     viridis,
 };
 
@@ -85,7 +85,7 @@ fn every_plot_writes_a_png_of_the_asked_size() {
     assert_eq!(png_size(&f), (640, 480));
 
     let f = dir.join("hist.png");
-    Histogram::new((0..1000).map(|i| (i as f64 * 0.37).sin()))
+    HistogramPlot::new((0..1000).map(|i| (i as f64 * 0.37).sin()))
         .bins(30)
         .density(true)
         .marker(Marker::new("mean", 0.0))
@@ -164,7 +164,7 @@ fn nan_points_are_skipped_not_fatal() {
     assert_eq!(png_size(&f), (500, 500));
 
     let f = dir.join("hist.png");
-    Histogram::new([1.0, f64::NAN, 2.0, 2.5, f64::NEG_INFINITY])
+    HistogramPlot::new([1.0, f64::NAN, 2.0, 2.5, f64::NEG_INFINITY])
         .marker(Marker::new("undefined", f64::NAN))
         .save_png(&f, 500, 400)
         .unwrap();
@@ -195,7 +195,7 @@ fn empty_data_is_an_error_and_writes_nothing() {
         ),
         (
             "hist_empty",
-            Histogram::new(Vec::<f64>::new()).save_png(dir.join("d.png"), 400, 300),
+            HistogramPlot::new(Vec::<f64>::new()).save_png(dir.join("d.png"), 400, 300),
         ),
         (
             "trajectory_nan",

@@ -7,7 +7,8 @@
 use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyAnyMethods;
-use spinball_analysis::{Engine, Method, PAPER_DELTA0, StopRule, Threads};
+use spinball_analysis::estimators::{Method, PAPER_DELTA0};
+use spinball_analysis::run::{Engine, StopRule, Threads};
 use spinball_core::{Sampler, SpinLaw, State};
 
 use crate::errors::{spin_law, value_error};

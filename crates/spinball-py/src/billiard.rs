@@ -9,7 +9,8 @@ use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use spinball_analysis::{AnalysisError, collision_log};
+use spinball_analysis::AnalysisError;
+use spinball_analysis::diagnostics::collision_log;
 use spinball_core::{Billiard, Sampler, SpinLaw, State};
 use spinball_geometry::{Boundary, DVec2};
 

@@ -4,7 +4,7 @@
 use numpy::{IntoPyArray, PyArray1};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use spinball_analysis::{FtleDistribution, THRESHOLD_BAND};
+use spinball_analysis::estimators::{FtleDistribution, THRESHOLD_BAND};
 
 use crate::args::count;
 use crate::errors::analysis;

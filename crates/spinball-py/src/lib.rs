@@ -35,9 +35,15 @@ pub mod watch;
 #[pymodule]
 fn _spinball(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
-    m.add("CHAOS_THRESHOLD", spinball_analysis::CHAOS_THRESHOLD)?;
-    m.add("PAPER_DELTA0", spinball_analysis::PAPER_DELTA0)?;
-    m.add("THRESHOLD_BAND", spinball_analysis::THRESHOLD_BAND.to_vec())?;
+    m.add(
+        "CHAOS_THRESHOLD",
+        spinball_analysis::estimators::CHAOS_THRESHOLD,
+    )?;
+    m.add("PAPER_DELTA0", spinball_analysis::estimators::PAPER_DELTA0)?;
+    m.add(
+        "THRESHOLD_BAND",
+        spinball_analysis::estimators::THRESHOLD_BAND.to_vec(),
+    )?;
     m.add_class::<tables::PyTable>()?;
     m.add_class::<tables::PyCircle>()?;
     m.add_class::<tables::PyRectangle>()?;

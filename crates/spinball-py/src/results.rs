@@ -7,7 +7,7 @@ use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
-use spinball_analysis::{LyapunovEstimate, Provenance, SpectrumEstimate};
+use spinball_analysis::run::{LyapunovEstimate, Provenance, SpectrumEstimate};
 
 use crate::errors::{analysis, value_error};
 use crate::ftle::PyFtleDistribution;
@@ -57,7 +57,7 @@ impl PyLyapunovResult {
     fn column<T: numpy::Element>(
         &self,
         py: Python<'_>,
-        f: impl Fn(&spinball_analysis::TrajectoryStats) -> T,
+        f: impl Fn(&spinball_analysis::run::TrajectoryStats) -> T,
     ) -> Py<PyArray1<T>> {
         self.inner
             .trajectories
@@ -314,7 +314,7 @@ impl PySpectrumResult {
     fn matrix(
         &self,
         py: Python<'_>,
-        f: impl Fn(&spinball_analysis::Spectrum) -> [f64; 5],
+        f: impl Fn(&spinball_analysis::estimators::Spectrum) -> [f64; 5],
     ) -> PyResult<Py<PyArray2<f64>>> {
         let flat: Vec<f64> = self.inner.spectra.iter().flat_map(f).collect();
         let a = Array2::from_shape_vec((self.inner.spectra.len(), 5), flat)
@@ -394,8 +394,8 @@ impl PySpectrumResult {
     #[getter]
     fn delta0(&self) -> Option<f64> {
         match self.inner.options.method {
-            spinball_analysis::Method::FiniteDifference { delta0 } => Some(delta0),
-            spinball_analysis::Method::Tangent => None,
+            spinball_analysis::estimators::Method::FiniteDifference { delta0 } => Some(delta0),
+            spinball_analysis::estimators::Method::Tangent => None,
         }
     }
     /// Collisions between re-orthonormalisations.

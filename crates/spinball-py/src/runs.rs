@@ -9,9 +9,10 @@ use std::time::Instant;
 
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use spinball_analysis::{
-    AlphaSweep, AnalysisError, CHAOS_THRESHOLD, Control, Engine, Ensemble, Method,
-    SpectrumEstimate, SpectrumOptions, Threads, spectrum_ensemble,
+use spinball_analysis::AnalysisError;
+use spinball_analysis::estimators::{CHAOS_THRESHOLD, Method, SpectrumOptions};
+use spinball_analysis::run::{
+    AlphaSweep, Control, Engine, Ensemble, SpectrumEstimate, Threads, spectrum_ensemble,
 };
 use spinball_core::{Billiard, Sampler, SpinLaw, State};
 use spinball_geometry::Boundary;

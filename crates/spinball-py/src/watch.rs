@@ -10,7 +10,7 @@
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict};
-use spinball_analysis::{Control, RunEvent, RunObserver};
+use spinball_analysis::run::{Control, RunEvent, RunObserver};
 
 /// The observer of a run started from Python.
 pub struct Watch {

@@ -18,7 +18,7 @@ def within(value, sem, paper, paper_sem, k=3.0):
 
 # Paper (Lund, Murugan, Shock, arXiv:2505.15335 v2), Table I, column 10^4
 # collisions, paper sampler, finite differences with delta0 = 1e-7 (the
-# numbers crates/spinball-analysis/src/paper.rs stores). Their SEMs are over
+# numbers crates/spinball-analysis/src/diagnostics/paper.rs stores). Their SEMs are over
 # 10^4 ICs; ours, over fewer ICs, dominate the tolerance of 3 combined SEMs.
 TABLE_I_1E4 = [
     ("stadium:a=1", 0.1, 0.281, 0.0005),

@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use spinball_analysis::trajectories_csv;
+use spinball_analysis::run::trajectories_csv;
 
 use crate::commands::lyapunov::{LyapunovArgs, Outcome, run_ensembles};
 use crate::error::CliError;

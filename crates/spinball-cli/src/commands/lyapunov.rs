@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use clap::Args;
-use spinball_analysis::{LyapunovEstimate, PartialRun, TrajectoryStats};
+use spinball_analysis::run::{LyapunovEstimate, PartialRun, TrajectoryStats};
 
 use crate::documents::{PartialDocument, write_json};
 use crate::error::CliError;

@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use clap::Args;
-use spinball_analysis::merge_partials;
+use spinball_analysis::run::merge_partials;
 
 use crate::commands::spectrum::{SPECTRUM_PARTIAL_KIND, SpectrumDocument};
 use crate::documents::{PARTIAL_KIND, PartialDocument};

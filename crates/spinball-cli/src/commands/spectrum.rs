@@ -5,9 +5,9 @@ use std::ops::Range;
 
 use clap::Args;
 use serde::{Deserialize, Serialize};
-use spinball_analysis::{
-    AnalysisError, Shard, SpectrumEstimate, SpectrumOptions, TableRecord, spectrum_ensemble,
-};
+use spinball_analysis::AnalysisError;
+use spinball_analysis::estimators::SpectrumOptions;
+use spinball_analysis::run::{Shard, SpectrumEstimate, TableRecord, spectrum_ensemble};
 use spinball_core::Billiard;
 
 use crate::documents::write_json;

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 use serde::Serialize;
-use spinball_analysis::{Engine, Ensemble};
+use spinball_analysis::run::{Engine, Ensemble};
 use spinball_core::SpinLaw;
 use spinball_geometry::Boundary;
 use spinball_plot::{Plot, TablePlot};

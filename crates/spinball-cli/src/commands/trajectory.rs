@@ -3,7 +3,8 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use spinball_analysis::{COLLISION_COLUMNS, Starts, collision_log};
+use spinball_analysis::diagnostics::{COLLISION_COLUMNS, collision_log};
+use spinball_analysis::run::Starts;
 use spinball_core::{Billiard, Sampler, SpinLaw, State};
 use spinball_geometry::DVec2;
 

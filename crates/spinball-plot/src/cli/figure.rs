@@ -24,7 +24,7 @@
 use std::fmt;
 use std::path::{Path, PathBuf};
 
-use spinball_analysis::Threads;
+use spinball_analysis::run::Threads;
 
 use super::options::{ArgError, Matches, Opt, Parsed, exit_on_error, parse_options, usage_text};
 use crate::error::PlotError;

@@ -14,7 +14,8 @@
 
 use std::path::PathBuf;
 
-use spinball_analysis::{Ensemble, Method, Threads};
+use spinball_analysis::estimators::Method;
+use spinball_analysis::run::{Ensemble, Threads};
 use spinball_core::{Sampler, SpinLaw, SpinLawError};
 use spinball_geometry::Table;
 
