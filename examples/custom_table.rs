@@ -16,7 +16,7 @@ use spinball::analysis::report::SweepRow;
 use spinball::analysis::run::AlphaSweep;
 use spinball::geometry::{ArcSegment, DVec2, LineSegment, Segment};
 use spinball::prelude::*;
-use spinball_plot::cli::FigureArgs;
+use spinball_figures::FigureArgs;
 
 /// Cap radius 1 on a stem of half-width `w` and height `h`.
 fn mushroom(w: f64, h: f64) -> Result<SegmentTable, Box<dyn std::error::Error>> {

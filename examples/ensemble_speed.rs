@@ -30,35 +30,39 @@ use spinball::analysis::estimators::median;
 use spinball::analysis::run::{Engine, Threads};
 use spinball::geometry::{Built, TableFile, TableVisitor};
 use spinball::prelude::*;
-use spinball_plot::cli::Opt;
-use spinball_plot::{BoxError, run_figure_with};
+use spinball_figures::{BoxError, run_figure_with};
 
 const NAME: &str = "ensemble_speed";
 const ABOUT: &str =
     "Wall ns per IC-step of the λ ensemble on the lane and scalar engines, and their ratio.";
-const OPTIONS: [Opt; 5] = [
-    Opt::value(
-        "table",
-        "SPEC|FILE",
-        "built-in spec or table file (default docs/tables/mushroom.toml)",
-    ),
-    Opt::value("alpha", "A", "spin parameter α (default 0.5)"),
-    Opt::value(
-        "ics",
-        "N",
-        "initial conditions on the lane engine (default 2000, quick 192)",
-    ),
-    Opt::value(
-        "collisions",
-        "T",
-        "collisions per trajectory (default 20000, quick 2000)",
-    ),
-    Opt::value(
-        "repeat",
-        "R",
-        "rounds, one run per engine and method each; medians reported (default 3)",
-    ),
-];
+/// The example's own options.
+#[derive(Debug, clap::Args)]
+struct Options {
+    /// built-in spec or table file
+    #[arg(
+        long,
+        value_name = "SPEC|FILE",
+        default_value = "docs/tables/mushroom.toml"
+    )]
+    table: String,
+    /// spin parameter α
+    #[arg(
+        long,
+        value_name = "A",
+        default_value_t = 0.5,
+        allow_negative_numbers = true
+    )]
+    alpha: f64,
+    /// initial conditions on the lane engine (default 2000, quick 192)
+    #[arg(long, value_name = "N")]
+    ics: Option<u64>,
+    /// collisions per trajectory (default 20000, quick 2000)
+    #[arg(long, value_name = "T")]
+    collisions: Option<u64>,
+    /// rounds, one run per engine and method each; medians reported
+    #[arg(long, value_name = "R", default_value_t = 3)]
+    repeat: usize,
+}
 
 /// The run's settings.
 struct Bench {
@@ -134,22 +138,18 @@ impl TableVisitor for &Bench {
 }
 
 fn main() -> ExitCode {
-    run_figure_with(NAME, ABOUT, &OPTIONS, |args, _| {
-        let spec: String = args
-            .extra
-            .get_or("table", "docs/tables/mushroom.toml".to_string())?;
+    run_figure_with(NAME, ABOUT, |args, own: &Options, _| {
+        let spec = &own.table;
         let bench = Bench {
-            alpha: args.extra.get_or("alpha", 0.5)?,
-            ics: args.extra.get_or("ics", args.pick(192, 2_000, 2_000))?,
-            collisions: args
-                .extra
-                .get_or("collisions", args.pick(2_000, 20_000, 20_000))?,
-            repeat: args.extra.get_or("repeat", 3usize)?.max(1),
+            alpha: own.alpha,
+            ics: own.ics.unwrap_or(args.pick(192, 2_000, 2_000)),
+            collisions: own.collisions.unwrap_or(args.pick(2_000, 20_000, 20_000)),
+            repeat: own.repeat.max(1),
             seed: args.seed,
             threads: args.threads,
         };
         let table = if spec.ends_with(".toml") || spec.ends_with(".json") {
-            TableFile::read(&spec)?.build()?
+            TableFile::read(spec)?.build()?
         } else {
             Built::Table(spec.parse::<Table>()?)
         };

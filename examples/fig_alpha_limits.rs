@@ -23,10 +23,10 @@ use std::process::ExitCode;
 
 use serde_json::json;
 use spinball_analysis::estimators::Method;
-use spinball_plot::{
-    ALPHA_LABEL, Curve, Grid, Job, LAMBDA_LABEL, Legend, LinePlot, Plan, palette, run_figure,
-    run_jobs, template, write_curves,
+use spinball_figures::{
+    ALPHA_LABEL, Curve, Job, LAMBDA_LABEL, Plan, run_figure, run_jobs, template, write_curves,
 };
+use spinball_plot::{Grid, Legend, LinePlot, palette};
 
 const NAME: &str = "fig_alpha_limits";
 const ABOUT: &str = "λ(α) of the stadium and Sinai tables for α from 1e-12 to 1e12 (extended law), tangent and finite differences.";

@@ -31,10 +31,11 @@ use spinball_analysis::diagnostics;
 use spinball_analysis::estimators::{CHAOS_THRESHOLD, THRESHOLD_BAND};
 use spinball_analysis::precision::Measurement;
 use spinball_analysis::run::{LyapunovEstimate, linspace};
-use spinball_plot::{
-    ALPHA_LABEL, Grid, Job, Legend, LinePlot, Plan, Series, measured, palette, paper_markers,
-    run_figure, run_jobs, scaled, template, unit_grid, write_curves,
+use spinball_figures::{
+    ALPHA_LABEL, Job, Plan, measured, paper_markers, run_figure, run_jobs, scaled, template,
+    unit_grid, write_curves,
 };
+use spinball_plot::{Grid, Legend, LinePlot, Series, palette};
 
 const NAME: &str = "fig_chaotic_fraction";
 const ABOUT: &str = "Chaotic fraction (FTLE > 0.01) vs α for the stadium and Sinai tables, with the 0.001–0.05 threshold band (paper Fig. chaotic_fraction).";

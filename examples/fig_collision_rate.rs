@@ -16,7 +16,7 @@
 //! | default   | 0, 0.001, 0.003, 0.01, 0.03, 0.05, 0.1, …, 1    | batches of 200 until SEM ≤ 2% of λ (400..4000) × 10⁴  |
 //! | `--paper` | 0, 0.001, 0.003, 0.01, 0.03 and 49 values in (0, 1] | 10⁵ ICs × 10⁴ collisions (the paper's)           |
 //!
-//! ν and λ/ν as in `spinball_plot::CurveRates`, drawn relative to Santaló's
+//! ν and λ/ν as in `spinball_figures::CurveRates`, drawn relative to Santaló's
 //! rate at α = 0, `|∂Q|/(π|Q|)`; reference lines: the mean speed of the
 //! paper's initial conditions at any α > 0 (`√3/4 + π/6 ≈ 0.957`) and of the
 //! invariant measure (`π/4`). Writes `collision_rate.png` (2 × 2: ν on
@@ -28,7 +28,9 @@ use std::process::ExitCode;
 use serde_json::json;
 use spinball_analysis::run::linspace;
 use spinball_core::Sampler;
-use spinball_plot::{Job, Plan, collision_rate_grid, run_figure, run_jobs, template, write_curves};
+use spinball_figures::{
+    Job, Plan, collision_rate_grid, run_figure, run_jobs, template, write_curves,
+};
 
 const NAME: &str = "fig_collision_rate";
 const ABOUT: &str = "Collision rate ν(α) and per-collision exponent λ/ν for the stadium and Sinai tables, paper and microcanonical initial conditions (paper appendix, Fig. collision_rate).";

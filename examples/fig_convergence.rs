@@ -26,11 +26,12 @@ use spinball_analysis::diagnostics;
 use spinball_analysis::estimators::Method;
 use spinball_analysis::precision::lcn_traces;
 use spinball_core::State;
-use spinball_geometry::{DVec2, Table};
-use spinball_plot::{
-    Csv, Grid, LCN_TRACE_COLUMNS, TableIRecord, lcn_finals, lcn_trace_panel, lcn_trace_rows,
-    run_figure, table_i_csv, table_i_grid, table_i_markdown, table_i_rows,
+use spinball_figures::{
+    Csv, LCN_TRACE_COLUMNS, TableIRecord, lcn_finals, lcn_trace_panel, lcn_trace_rows, run_figure,
+    table_i_csv, table_i_grid, table_i_markdown, table_i_rows,
 };
+use spinball_geometry::{DVec2, Table};
+use spinball_plot::Grid;
 
 const NAME: &str = "fig_convergence";
 const ABOUT: &str = "LCN traces λ(t) for four tables at five α, and the paper's Table I (λ vs number of collisions).";

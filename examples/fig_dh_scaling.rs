@@ -26,10 +26,10 @@ use serde_json::json;
 use spinball_analysis::estimators::CHAOS_THRESHOLD;
 use spinball_analysis::precision::{Measurement, dhf_product, normalised};
 use spinball_analysis::run::LyapunovEstimate;
-use spinball_plot::{
-    ALPHA_LABEL, Grid, Job, LineKind, LinePlot, Plan, Series, measured, palette, run_figure,
-    run_jobs, template, unit_grid, write_curves,
+use spinball_figures::{
+    ALPHA_LABEL, Job, Plan, measured, run_figure, run_jobs, template, unit_grid, write_curves,
 };
+use spinball_plot::{Grid, LineKind, LinePlot, Series, palette};
 
 const NAME: &str = "fig_dh_scaling";
 const ABOUT: &str = "Datseris–Hupe–Fleischmann test: λ·f_ch vs α for the stadium and Sinai tables (paper appendix, Fig. dh_scaling).";

@@ -21,11 +21,12 @@ use std::process::ExitCode;
 use serde_json::json;
 use spinball_analysis::diagnostics::energy_conservation;
 use spinball_core::{Billiard, SpinLaw, State};
-use spinball_geometry::{DVec2, Table};
-use spinball_plot::{
-    Csv, ENERGY_LONG_COLUMNS, ENERGY_TRACE_COLUMNS, EnergyPanels, Grid, energy_long_rows,
-    energy_trace_rows, format_tick, run_figure,
+use spinball_figures::{
+    Csv, ENERGY_LONG_COLUMNS, ENERGY_TRACE_COLUMNS, EnergyPanels, energy_long_rows,
+    energy_trace_rows, run_figure,
 };
+use spinball_geometry::{DVec2, Table};
+use spinball_plot::{Grid, format_tick};
 
 const NAME: &str = "fig_energy";
 const ABOUT: &str = "Energy conservation |Eₙ − E₀| per collision and over long runs (paper appendix; fixed initial condition, --seed is not used).";

@@ -28,7 +28,8 @@ use spinball_analysis::estimators::{CHAOS_THRESHOLD, THRESHOLD_BAND};
 use spinball_analysis::phase_space::{compare_classes, trajectory_profiles};
 use spinball_analysis::report::sweep_rows;
 use spinball_core::{Billiard, Sampler, SpinLaw};
-use spinball_plot::{Grid, ftle_histogram, run_figure, summary_csv, template, trajectories_csv};
+use spinball_figures::{ftle_histogram, run_figure, summary_csv, template, trajectories_csv};
+use spinball_plot::Grid;
 
 const NAME: &str = "fig_ftle";
 const ABOUT: &str = "FTLE distributions of the stadium (a = 1) at six α with mean, median and conditional mean (paper §V, Fig. 4).";

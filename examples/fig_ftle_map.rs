@@ -28,11 +28,9 @@ use std::process::ExitCode;
 use serde_json::json;
 use spinball_analysis::phase_space::{FacingFlats, FtleMapOptions, Slice, island_map};
 use spinball_core::SpinLaw;
+use spinball_figures::{Csv, ISLAND_COLUMNS, island_panel, island_row, run_figure_with};
 use spinball_geometry::Table;
-use spinball_plot::cli::Opt;
-use spinball_plot::{
-    Colorbar, Csv, Grid, ISLAND_COLUMNS, island_panel, island_row, run_figure_with,
-};
+use spinball_plot::{Colorbar, Grid};
 
 const NAME: &str = "fig_ftle_map";
 const ABOUT: &str = "FTLE maps on the section (s, sin θ) at fixed spin, stadium and Sinai at α = 0, 0.3, 0.5, 1, with the predicted bouncing-ball island.";
@@ -41,14 +39,22 @@ const ALPHAS: [f64; 4] = [0.0, 0.3, 0.5, 1.0];
 /// Top of the colour scale (FTLE per unit time); larger values are clamped.
 const FTLE_MAX: f64 = 0.6;
 
+/// The example's own options.
+#[derive(Debug, clap::Args)]
+struct Options {
+    /// the spin u of the slice
+    #[arg(
+        long,
+        value_name = "U",
+        default_value_t = 0.0,
+        allow_negative_numbers = true
+    )]
+    spin: f64,
+}
+
 fn main() -> ExitCode {
-    let extra = [Opt::value(
-        "spin",
-        "U",
-        "the spin u of the slice (default 0)",
-    )];
-    run_figure_with(NAME, ABOUT, &extra, |args, report| {
-        let spin: f64 = args.extra.get_or("spin", 0.0)?;
+    run_figure_with(NAME, ABOUT, |args, own: &Options, report| {
+        let spin = own.spin;
         let size: usize = args.pick(64, 512, 512);
         let collisions: u64 = args.pick(500, 2_000, 10_000);
         let ics: u64 = args.pick(1_000, 20_000, 100_000);

@@ -26,11 +26,12 @@ use std::process::ExitCode;
 
 use spinball_analysis::phase_space::{SectionBox, kac_comparison};
 use spinball_core::{Billiard, SpinLaw};
-use spinball_geometry::Table;
-use spinball_plot::{
-    Csv, Grid, KAC_COLUMNS, KAC_ORBIT_COLUMNS, LinePlot, kac_histogram, kac_orbit_rows,
-    kac_ratio_series, kac_row, palette, run_figure,
+use spinball_figures::{
+    Csv, KAC_COLUMNS, KAC_ORBIT_COLUMNS, kac_histogram, kac_orbit_rows, kac_ratio_series, kac_row,
+    run_figure,
 };
+use spinball_geometry::Table;
+use spinball_plot::{Grid, LinePlot, palette};
 
 const NAME: &str = "fig_kac";
 const ABOUT: &str = "Per-orbit mean return times against Kac's lemma with the spinning billiard's invariant measure, stadium and Sinai over α.";

@@ -26,10 +26,11 @@ use std::process::ExitCode;
 use serde_json::json;
 use spinball_analysis::diagnostics;
 use spinball_analysis::run::linspace;
-use spinball_plot::{
-    ALPHA_LABEL, Curve, Grid, Job, LAMBDA_LABEL, Legend, LinePlot, Plan, palette, paper_markers,
-    run_figure, run_jobs, template, unit_grid, write_curves,
+use spinball_figures::{
+    ALPHA_LABEL, Curve, Job, LAMBDA_LABEL, Plan, paper_markers, run_figure, run_jobs, template,
+    unit_grid, write_curves,
 };
+use spinball_plot::{Grid, Legend, LinePlot, palette};
 
 const NAME: &str = "fig_lyapunov";
 const ABOUT: &str = "λ(α) for the circle, rectangle, stadium and Sinai tables with SEM error bars (paper Fig. lyap_sweep).";

@@ -23,11 +23,12 @@ use std::process::ExitCode;
 use serde_json::json;
 use spinball_analysis::diagnostics::{q_pair_statistics, wall_statistics};
 use spinball_core::{Billiard, Sampler, SpinLaw};
-use spinball_geometry::Stadium;
-use spinball_plot::{
-    Grid, q_class_panel, q_class_summaries, q_conserved_panel, q_histograms_csv, q_medians,
-    q_pairs_csv, run_figure,
+use spinball_figures::{
+    q_class_panel, q_class_summaries, q_conserved_panel, q_histograms_csv, q_medians, q_pairs_csv,
+    run_figure,
 };
+use spinball_geometry::Stadium;
+use spinball_plot::Grid;
 
 const NAME: &str = "fig_q_conservation";
 const ABOUT: &str =

@@ -24,14 +24,14 @@ use std::process::ExitCode;
 
 use spinball_analysis::phase_space::{sampled_sections, spin_slice};
 use spinball_core::{Billiard, Sampler, SpinLaw};
+use spinball_figures::{
+    BoxError, Csv, SECTION_COLUMNS, run_figure_with, section_cloud, section_panel, section_rows,
+    shell_spin,
+};
 use spinball_geometry::{
     ArcSegment, Boundary, Built, DVec2, LineSegment, Segment, SegmentTable, Table,
 };
-use spinball_plot::cli::Opt;
-use spinball_plot::{
-    BoxError, Colorbar, Csv, Grid, SECTION_COLUMNS, run_figure_with, section_cloud, section_panel,
-    section_rows, shell_spin,
-};
+use spinball_plot::{Colorbar, Grid};
 
 const NAME: &str = "fig_sections";
 const ABOUT: &str = "Birkhoff sections (s, sin θ) coloured by spin for the built-in tables and a mushroom, a spin slice, and the stadium's 3-D section.";
@@ -58,10 +58,22 @@ fn mushroom() -> Result<SegmentTable, BoxError> {
     ])?)
 }
 
+/// The example's own options.
+#[derive(Debug, clap::Args)]
+struct Options {
+    /// spin parameter α
+    #[arg(
+        long,
+        value_name = "A",
+        default_value_t = 0.5,
+        allow_negative_numbers = true
+    )]
+    alpha: f64,
+}
+
 fn main() -> ExitCode {
-    let extra = [Opt::value("alpha", "A", "spin parameter α (default 0.5)")];
-    run_figure_with(NAME, ABOUT, &extra, |args, report| {
-        let alpha: f64 = args.extra.get_or("alpha", 0.5)?;
+    run_figure_with(NAME, ABOUT, |args, own: &Options, report| {
+        let alpha = own.alpha;
         let law = SpinLaw::new(alpha)?;
         let u_max = shell_spin(alpha);
         let orbits: u64 = args.pick(8, 24, 48);

@@ -30,8 +30,9 @@ use spinball_analysis::diagnostics::{
 use spinball_analysis::precision::Measurement;
 use spinball_analysis::report::SweepRow;
 use spinball_core::{Billiard, SpinLaw};
+use spinball_figures::{Csv, measured_band, run_figure, template};
 use spinball_geometry::Table;
-use spinball_plot::{Csv, Grid, Legend, LinePlot, measured_band, run_figure, template, viridis};
+use spinball_plot::{Grid, Legend, LinePlot, viridis};
 
 const NAME: &str = "fig_separation";
 const ABOUT: &str =

@@ -26,10 +26,11 @@ use std::process::ExitCode;
 use serde_json::json;
 use spinball_analysis::diagnostics;
 use spinball_analysis::precision::Measurement;
-use spinball_plot::{
-    ALPHA_LABEL, Grid, LAMBDA_LABEL, Legend, LineKind, LinePlot, Plan, Series, measured, palette,
-    paper_markers, run_figure, run_scan, unit_grid, write_curves, write_shares,
+use spinball_figures::{
+    ALPHA_LABEL, LAMBDA_LABEL, Plan, measured, paper_markers, run_figure, run_scan, unit_grid,
+    write_curves, write_shares,
 };
+use spinball_plot::{Grid, Legend, LineKind, LinePlot, Series, palette};
 
 const NAME: &str = "fig_sinai_scan";
 const ABOUT: &str = "λ(α) for Sinai tables L = 2, R = 0.3 … 1.5, with the share of collisions on the obstacle (paper Fig. R_scan).";

@@ -27,8 +27,8 @@ use serde_json::json;
 use spinball_analysis::estimators::{Method, SpectrumOptions};
 use spinball_analysis::run::spectrum_ensemble;
 use spinball_core::{Billiard, Sampler, SpinLaw};
+use spinball_figures::{SpectrumPair, run_figure, spectrum_grid, spectrum_pairs_csv, unit_grid};
 use spinball_geometry::Table;
-use spinball_plot::{SpectrumPair, run_figure, spectrum_grid, spectrum_pairs_csv, unit_grid};
 
 const NAME: &str = "fig_spectrum";
 const ABOUT: &str = "Full Lyapunov spectrum vs α, stadium and Sinai, exact tangent and the paper's finite differences (paper appendix E).";

@@ -25,10 +25,11 @@ use std::process::ExitCode;
 
 use serde_json::json;
 use spinball_analysis::precision::normalised;
-use spinball_plot::{
-    ALPHA_LABEL, Grid, LAMBDA_LABEL, Legend, LinePlot, Plan, measured, palette, run_figure,
-    run_scan, unit_grid, write_curves, write_shares,
+use spinball_figures::{
+    ALPHA_LABEL, LAMBDA_LABEL, Plan, measured, run_figure, run_scan, unit_grid, write_curves,
+    write_shares,
 };
+use spinball_plot::{Grid, Legend, LinePlot, palette};
 
 const NAME: &str = "fig_stadium_scan";
 const ABOUT: &str = "λ(α) for stadiums a = 0.2, 0.5, 1, 2, 4 and the normalised λ(α)/λ(0), with the curved-collision share (paper Figs. geometry and collapse).";

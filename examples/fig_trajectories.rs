@@ -20,8 +20,9 @@ use std::process::ExitCode;
 
 use serde_json::json;
 use spinball_core::{Billiard, Recorder, SpinLaw, State};
+use spinball_figures::{Csv, run_figure};
 use spinball_geometry::{DVec2, Table};
-use spinball_plot::{Colorbar, Csv, Grid, TablePlot, run_figure};
+use spinball_plot::{Colorbar, Grid, TablePlot};
 
 const NAME: &str = "fig_trajectories";
 const ABOUT: &str = "Trajectories in the four tables at α = 0, 0.3, 0.7, 1, coloured by time (paper Fig. 1; fixed initial condition, --seed is not used).";

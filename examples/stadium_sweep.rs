@@ -34,10 +34,11 @@ use spinball_analysis::precision::{ErrorBudget, Measurement, paired_difference};
 use spinball_analysis::report::BudgetRow;
 use spinball_analysis::run::linspace;
 use spinball_core::SpinLaw;
-use spinball_plot::{
-    ALPHA_LABEL, Grid, Job, LAMBDA_LABEL, LineKind, LinePlot, Plan, Series, measured, palette,
-    paper_markers, run_figure, run_jobs, template, write_curves,
+use spinball_figures::{
+    ALPHA_LABEL, Job, LAMBDA_LABEL, Plan, measured, paper_markers, run_figure, run_jobs, template,
+    write_curves,
 };
+use spinball_plot::{Grid, LineKind, LinePlot, Series, palette};
 
 const NAME: &str = "stadium_sweep";
 const ABOUT: &str = "λ(α) of the stadium a = 1 by finite differences (the paper's method) and exact tangent dynamics, with SEM ≤ 1% per point by default.";

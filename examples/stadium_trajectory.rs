@@ -11,25 +11,37 @@
 use std::process::ExitCode;
 
 use spinball::prelude::*;
-use spinball_plot::cli::Opt;
-use spinball_plot::run_figure_with;
+use spinball_figures::run_figure_with;
 
-const OPTIONS: [Opt; 3] = [
-    Opt::value("alpha", "A", "spin parameter (default 0.5)"),
-    Opt::value("a", "A", "half-length of the flat walls (default 1)"),
-    Opt::value(
-        "collisions",
-        "N",
-        "collisions to print (default 20, 10 with --quick)",
-    ),
-];
+/// The example's own options.
+#[derive(Debug, clap::Args)]
+struct Options {
+    /// spin parameter
+    #[arg(
+        long,
+        value_name = "A",
+        default_value_t = 0.5,
+        allow_negative_numbers = true
+    )]
+    alpha: f64,
+    /// half-length of the flat walls
+    #[arg(
+        long,
+        value_name = "A",
+        default_value_t = 1.0,
+        allow_negative_numbers = true
+    )]
+    a: f64,
+    /// collisions to print (default 20, 10 with --quick)
+    #[arg(long, value_name = "N")]
+    collisions: Option<u64>,
+}
 
 fn main() -> ExitCode {
     let about = "One trajectory in the stadium, collision by collision, with E − E0 and Q.";
-    run_figure_with("stadium_trajectory", about, &OPTIONS, |args, _| {
-        let alpha = args.extra.get_or("alpha", 0.5)?;
-        let a = args.extra.get_or("a", 1.0)?;
-        let collisions: u64 = args.extra.get_or("collisions", args.pick(10, 20, 20))?;
+    run_figure_with("stadium_trajectory", about, |args, own: &Options, _| {
+        let (alpha, a) = (own.alpha, own.a);
+        let collisions: u64 = own.collisions.unwrap_or(args.pick(10, 20, 20));
         let billiard = Billiard::new(Stadium::new(a)?, SpinLaw::new(alpha)?);
         let start = Sampler::Paper.initial_state(billiard.table(), billiard.law(), args.seed, 0);
         let mut ball = billiard.launch(start)?;

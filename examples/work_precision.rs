@@ -32,10 +32,11 @@ use spinball_analysis::estimators::Method;
 use spinball_analysis::precision::{Budget, Planner, Reference, work_precision};
 use spinball_analysis::run::Engine;
 use spinball_core::SpinLaw;
-use spinball_plot::{
-    Csv, Grid, Legend, LineKind, LinePlot, Series, WORK_COLUMNS, bias_vs_t, error_vs_time,
-    method_label, palette, run_figure, sem_vs_n, template, time_to_target, work_rows,
+use spinball_figures::{
+    Csv, WORK_COLUMNS, bias_vs_t, error_vs_time, method_label, run_figure, sem_vs_n, template,
+    time_to_target, work_rows,
 };
+use spinball_plot::{Grid, Legend, LineKind, LinePlot, Series, palette};
 
 const NAME: &str = "work_precision";
 const ABOUT: &str = "Work–precision: error against wall time per method and engine, bias against T, SEM against N, and the planned time to a target total error.";

@@ -28,6 +28,7 @@ use crate::commands::lyapunov::{LyapunovArgs, lyapunov};
 use crate::commands::merge::{MergeArgs, merge};
 use crate::commands::slurm::{SlurmArgs, slurm};
 use crate::commands::spectrum::{SpectrumArgs, spectrum};
+use crate::commands::sweep::{SweepArgs, sweep};
 use crate::commands::table::{TableArgs, table};
 use crate::commands::trajectory::{TrajectoryArgs, trajectory};
 
@@ -59,6 +60,9 @@ enum Command {
     /// Write the SLURM job array (tables × α × shards) and merge job of a
     /// campaign.
     Slurm(Box<SlurmArgs>),
+    /// λ(α) on one built-in table with every setting explicit, rewriting a
+    /// JSON document after each α: the machine interface for scripts.
+    Sweep(Box<SweepArgs>),
 }
 
 fn main() -> ExitCode {
@@ -71,6 +75,7 @@ fn main() -> ExitCode {
         Command::Table(a) => table(a),
         Command::Merge(a) => merge(a),
         Command::Slurm(a) => slurm(a),
+        Command::Sweep(a) => sweep(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

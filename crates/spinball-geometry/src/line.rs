@@ -58,7 +58,7 @@ impl LineSegment {
     /// [`GeometryError::OutOfRange`] for a coordinate beyond `±1e60`,
     /// [`GeometryError::DegenerateWall`] if its ends coincide,
     /// [`GeometryError::WallTooShort`] if it is shorter than
-    /// [`MIN_LENGTH`](crate::error::MIN_LENGTH) (`1e-60`).
+    /// [`MIN_LENGTH`] (`1e-60`).
     pub fn new(start: DVec2, end: DVec2) -> Result<Self, GeometryError> {
         for (name, v) in [
             ("start.x", start.x),

@@ -64,16 +64,6 @@ pub enum PlotError {
         #[source]
         source: std::io::Error,
     },
-    /// A JSON document could not be made (its body is not a struct or map,
-    /// or a value fails to serialise).
-    #[error("cannot write {path} as JSON: {source}")]
-    Json {
-        /// The path.
-        path: PathBuf,
-        /// The underlying error.
-        #[source]
-        source: serde_json::Error,
-    },
     /// The drawing backend failed (includes PNG encoding errors).
     #[error("drawing failed: {0}")]
     Drawing(String),

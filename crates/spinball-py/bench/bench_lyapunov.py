@@ -2,14 +2,14 @@
 
 The ensemble of docs/PERFORMANCE.md: stadium a = 1, α = 0.5, the paper's
 sampler, finite differences (δ0 = 1e-7), 4000 initial conditions × 20 000
-collisions, seed 1. The Rust side is the `sweep` example (its JSON
+collisions, seed 1. The Rust side is `spinball sweep` (its JSON
 `wall_time_s`, and the whole process as seen from outside); the Python side
 is `spinball.lyapunov` (its `wall_time_s`, and the call as seen from
 Python, argument parsing and result conversion included). Runs alternate,
 so a change of machine load hits both; the medians are printed with the
 ratio and a check that both computed the same numbers.
 
-    python crates/spinball-py/bench/bench_lyapunov.py --sweep target/release/examples/sweep
+    python crates/spinball-py/bench/bench_lyapunov.py --spinball target/release/spinball
 
 Options: --runs N (5), --ics, --collisions, --threads (all cores).
 """
@@ -27,7 +27,7 @@ import spinball as sb
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--sweep", default=os.environ.get("SPINBALL_SWEEP", "target/release/examples/sweep"))
+    p.add_argument("--spinball", default=os.environ.get("SPINBALL", "target/release/spinball"))
     p.add_argument("--runs", type=int, default=5)
     p.add_argument("--ics", type=int, default=4000)
     p.add_argument("--collisions", type=int, default=20_000)
@@ -42,7 +42,7 @@ def main():
         path = os.path.join(tmp, "sweep.json")
         for k in range(a.runs):
             t0 = time.perf_counter()
-            subprocess.run([a.sweep, *common, "--json", path], check=True, stdout=subprocess.DEVNULL)
+            subprocess.run([a.spinball, "sweep", *common, "--json", path], check=True, stdout=subprocess.DEVNULL)
             rust_out.append(time.perf_counter() - t0)
             point = json.load(open(path))["points"][0]
             rust_in.append(point["wall_time_s"])

@@ -1,11 +1,12 @@
-"""For the same arguments the Python result equals the Rust `sweep`
-example's JSON, number for number (bitwise: JSON floats are printed
-shortest-round-trip and read back exactly).
+"""For the same arguments the Python result equals the JSON of the
+command line's `spinball sweep`, number for number (bitwise: JSON floats
+are printed shortest-round-trip and read back exactly).
 
-The example binary is found through the environment variable
-SPINBALL_SWEEP (CI points it at target/debug/examples/sweep, built by
-`cargo test` in the optimised test profile); without it the test runs
-`cargo run --release --example sweep` from the repository root.
+The `spinball` binary is found through the environment variable SPINBALL
+(CI points it at target/debug/spinball, built by `cargo test` in the
+optimised test profile); without it the test runs
+`cargo run --release -p spinball-cli --quiet -- sweep` from the repository
+root.
 """
 
 import json
@@ -23,13 +24,13 @@ ROOT = Path(__file__).resolve().parents[3]
 
 def run_sweep(tmp_path, args):
     out = tmp_path / "sweep.json"
-    exe = os.environ.get("SPINBALL_SWEEP")
+    exe = os.environ.get("SPINBALL")
     if exe:
-        cmd = [exe]
-    elif shutil.which("cargo") and (ROOT / "examples" / "sweep.rs").exists():
-        cmd = ["cargo", "run", "--release", "--quiet", "--example", "sweep", "--"]
+        cmd = [exe, "sweep"]
+    elif shutil.which("cargo") and (ROOT / "crates" / "spinball-cli").is_dir():
+        cmd = ["cargo", "run", "--release", "-p", "spinball-cli", "--quiet", "--", "sweep"]
     else:
-        pytest.skip("neither SPINBALL_SWEEP nor cargo and the repository are available")
+        pytest.skip("neither SPINBALL nor cargo and the repository are available")
     subprocess.run(cmd + args + ["--json", str(out)], cwd=ROOT, check=True,
                    stdout=subprocess.DEVNULL)
     return json.loads(out.read_text())
@@ -42,7 +43,7 @@ CASES = [
 
 
 @pytest.mark.parametrize("spec, alphas, method, sampler, seed", CASES)
-def test_python_equals_the_rust_sweep_example(tmp_path, spec, alphas, method, sampler, seed):
+def test_python_equals_spinball_sweep(tmp_path, spec, alphas, method, sampler, seed):
     ics, collisions = 48, 1500
     doc = run_sweep(tmp_path, [
         "--table", spec, "--alphas", ",".join(str(a) for a in alphas),

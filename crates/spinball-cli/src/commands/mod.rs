@@ -6,5 +6,6 @@ pub mod lyapunov;
 pub mod merge;
 pub mod slurm;
 pub mod spectrum;
+pub mod sweep;
 pub mod table;
 pub mod trajectory;

@@ -9,15 +9,14 @@
 //! α, without the full wall statistics).
 //!
 //! ```no_run
-//! use spinball_plot::cli::FigureArgs;
-//! use spinball_plot::{Plan, Report, run_scan, unit_grid, write_shares};
+//! use spinball_figures::{FigureArgs, Plan, Report, run_scan, unit_grid, write_shares};
 //!
 //! let args = FigureArgs::parse_or_exit("fig_demo", "Stadiums.");
 //! let tables = [("stadium:a=1".to_string(), "a = 1".to_string())];
 //! let scan = run_scan(&args, &tables, &unit_grid(3), &Plan::fixed(48, 2_000), (8, 1_000))?;
 //! println!("{}", scan.curves[0].label); // "a = 1 (61% curved)"
 //! write_shares(&mut Report::new("fig_demo", &args), "demo", &scan)?;
-//! # Ok::<(), spinball_plot::BoxError>(())
+//! # Ok::<(), spinball_figures::BoxError>(())
 //! ```
 
 use serde::Serialize;
@@ -26,10 +25,10 @@ use spinball_analysis::run::Threads;
 use spinball_core::{Sampler, SpinLaw};
 use spinball_geometry::Table;
 
-use crate::cli::FigureArgs;
+use crate::args::FigureArgs;
 use crate::csv::Csv;
 use crate::curves::{Curve, Job, run_jobs, template};
-use crate::error::PlotError;
+use crate::error::FigureError;
 use crate::figure::BoxError;
 use crate::plan::Plan;
 use crate::report::Report;
@@ -206,7 +205,7 @@ pub fn run_scan(
 ///
 /// # Errors
 /// As [`Report::csv`].
-pub fn write_shares(report: &mut Report, stem: &str, scan: &Scan) -> Result<(), PlotError> {
+pub fn write_shares(report: &mut Report, stem: &str, scan: &Scan) -> Result<(), FigureError> {
     let rows: Vec<ShareRow> = (0..scan.shares.len())
         .flat_map(|i| scan.share_rows(i))
         .collect();

@@ -9,7 +9,7 @@
 //!
 //! ```
 //! use spinball_analysis::estimators::Histogram;
-//! use spinball_plot::histograms_csv;
+//! use spinball_figures::histograms_csv;
 //!
 //! let mut h = Histogram::new(0.0, 2.0, 2)?;
 //! h.push(0.5);

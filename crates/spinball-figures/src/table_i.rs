@@ -9,7 +9,7 @@
 //! ([`convergence_estimates`](spinball_analysis::precision::convergence_estimates)).
 //!
 //! ```
-//! use spinball_plot::table_i_paper;
+//! use spinball_figures::table_i_paper;
 //! assert_eq!(table_i_paper("stadium:a=1", 0.5, 50_000).as_deref(), Some("0.183(1)"));
 //! assert_eq!(table_i_paper("stadium:a=1", 0.5, 2_000), None);
 //! ```
@@ -24,14 +24,13 @@ use spinball_analysis::{AnalysisError, diagnostics};
 
 use spinball_core::SpinLaw;
 
-use crate::cli::FigureArgs;
-use crate::colormap::viridis;
+use crate::args::FigureArgs;
 use crate::csv::Csv;
 use crate::curves::template;
 use crate::figure::BoxError;
-use crate::grid::Grid;
-use crate::lines::LinePlot;
 use crate::measured::measured;
+use spinball_plot::viridis;
+use spinball_plot::{Grid, LinePlot};
 
 /// One table at one α: our estimates after each number of collisions.
 #[derive(Debug, Clone)]
@@ -366,7 +365,7 @@ mod tests {
         );
         assert_eq!(rec.columns[0].paper, None);
         assert_eq!(rec.columns[1].paper.as_deref(), Some("0.183(1)"));
-        use crate::plot::Plot;
+        use spinball_plot::Plot;
         assert!(
             table_i_plot(&rows, "stadium:a=1", "Stadium")
                 .validate()
@@ -382,12 +381,8 @@ mod tests {
 
     #[test]
     fn rows_of_two_tables_and_their_grid() {
-        use crate::cli::Parsed;
-        let Parsed::Run(args) =
-            FigureArgs::try_parse_from("fig_t", ["--seed", "5", "--threads", "1"]).unwrap()
-        else {
-            panic!("help")
-        };
+        let args =
+            FigureArgs::try_parse_from("fig_t", "", ["--seed", "5", "--threads", "1"]).unwrap();
         let tables = [("stadium:a=1", "Stadium"), ("sinai:L=2,R=1", "Sinai")];
         let rows = table_i_rows(&args, &tables, &[0.5, 1.0], 4, &[300, 600]).unwrap();
         let keys: Vec<(&str, f64)> = rows.iter().map(|r| (r.table.as_str(), r.alpha)).collect();
@@ -410,7 +405,7 @@ mod tests {
         let means = |e: &[LyapunovEstimate]| e.iter().map(|e| (e.mean, e.sem)).collect::<Vec<_>>();
         assert_eq!(means(&rows[3].columns), means(&expected));
         assert_eq!(rows[3].columns[1].n_ics, 4);
-        use crate::plot::Plot;
+        use spinball_plot::Plot;
         assert!(table_i_grid(&rows, &tables, 4).validate().is_ok());
         assert!(table_i_rows(&args, &[("stadium:a=1", "S")], &[-1.0], 4, &[300]).is_err());
     }

@@ -5,7 +5,7 @@
 use spinball_analysis::phase_space::{IslandMap, Slice};
 
 use crate::csv::{Csv, optional};
-use crate::phase_plot::MapPlot;
+use spinball_plot::MapPlot;
 
 /// The columns of [`island_row`].
 pub const ISLAND_COLUMNS: [&str; 13] = [
@@ -76,11 +76,11 @@ pub fn island_panel(table: &str, island: &IslandMap, ftle_max: f64) -> MapPlot {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plot::Plot;
     use spinball_analysis::phase_space::{FacingFlats, FtleMapOptions, island_map};
     use spinball_analysis::run::Threads;
     use spinball_core::SpinLaw;
     use spinball_geometry::Table;
+    use spinball_plot::Plot;
 
     #[test]
     fn row_and_panel_of_a_stadium_map() {

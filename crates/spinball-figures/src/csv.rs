@@ -10,7 +10,7 @@
 //! table spec like `rectangle:L=1,H=1` does.
 //!
 //! ```
-//! use spinball_plot::Csv;
+//! use spinball_figures::Csv;
 //! let mut csv = Csv::new(&["table", "alpha", "lambda"]);
 //! csv.row(&[&"rectangle:L=1,H=1", &0.5, &1e-5]);
 //! assert_eq!(csv.as_str(), "table,alpha,lambda\n\"rectangle:L=1,H=1\",0.5,0.00001\n");

@@ -8,11 +8,11 @@
 
 use spinball_analysis::diagnostics::{PairClass, QPairStatistics};
 
-use crate::RGBColor;
 use crate::csv::Csv;
-use crate::lines::{Legend, LineKind, LinePlot, Series};
 use crate::result_plots::log_counts;
 use crate::result_tables::{histograms_csv, q_populations};
+use spinball_plot::RGBColor;
+use spinball_plot::{Legend, LineKind, LinePlot, Series};
 
 /// Where exact zeros are drawn (`log10 |ΔQ|`).
 pub const Q_ZERO_AT: f64 = -19.5;
@@ -125,10 +125,10 @@ pub fn q_medians(q: &QPairStatistics) -> Vec<(&'static str, Option<f64>)> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plot::Plot;
     use spinball_analysis::diagnostics::q_pair_statistics;
     use spinball_core::{Billiard, Sampler, SpinLaw};
     use spinball_geometry::Stadium;
+    use spinball_plot::Plot;
 
     #[test]
     fn panels_summaries_and_histograms_of_a_stadium_run() {

@@ -4,10 +4,9 @@
 
 use spinball_analysis::phase_space::KacComparison;
 
-use crate::RGBColor;
 use crate::csv::{Csv, optional};
-use crate::histogram::{HistogramPlot, Marker};
-use crate::lines::Series;
+use spinball_plot::RGBColor;
+use spinball_plot::{HistogramPlot, Marker, Series};
 
 /// The columns of [`kac_row`].
 pub const KAC_COLUMNS: [&str; 11] = [
@@ -96,11 +95,11 @@ pub fn kac_ratio_series(label: &str, runs: &[KacComparison]) -> Series {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plot::Plot;
     use spinball_analysis::phase_space::{SectionBox, kac_comparison};
     use spinball_analysis::run::Threads;
     use spinball_core::{Billiard, SpinLaw};
     use spinball_geometry::Stadium;
+    use spinball_plot::Plot;
 
     #[test]
     fn rows_histogram_and_ratio_of_a_stadium_run() {
@@ -132,7 +131,7 @@ mod tests {
                 .is_ok()
         );
         let series = kac_ratio_series("stadium", std::slice::from_ref(&kac));
-        let plot = crate::lines::LinePlot::new().series(series);
+        let plot = spinball_plot::LinePlot::new().series(series);
         assert!(plot.validate().is_ok());
     }
 }

@@ -9,8 +9,7 @@
 //! the records is the same every time and lives here.
 //!
 //! ```no_run
-//! use spinball_plot::cli::FigureArgs;
-//! use spinball_plot::{Job, Plan, Report, run_jobs, template, write_curves};
+//! use spinball_figures::{FigureArgs, Job, Plan, Report, run_jobs, template, write_curves};
 //!
 //! let args = FigureArgs::parse_or_exit("fig_demo", "λ(α) of the stadium.");
 //! let plan = args.pick(Plan::fixed(48, 2_000), Plan::fixed(1_000, 10_000), Plan::fixed(100_000, 50_000));
@@ -19,7 +18,7 @@
 //! println!("{}", curves[0].summary());
 //! let mut report = Report::new("fig_demo", &args);
 //! write_curves(&mut report, "demo", &curves, &())?;
-//! # Ok::<(), spinball_plot::BoxError>(())
+//! # Ok::<(), spinball_figures::BoxError>(())
 //! ```
 
 use std::fmt;
@@ -34,13 +33,13 @@ use spinball_analysis::run::{
 use spinball_core::SpinLaw;
 use spinball_geometry::{Table, TableSpecError};
 
-use crate::cli::FigureArgs;
-use crate::error::PlotError;
-use crate::lines::Series;
+use crate::args::FigureArgs;
+use crate::error::FigureError;
 use crate::measured::measured;
 use crate::plan::Plan;
 use crate::progress::Progress;
 use crate::report::Report;
+use spinball_plot::Series;
 
 /// The ensemble template of a figure on the table `spec` (e.g.
 /// `stadium:a=1`): paper sampler, finite differences, the command line's
@@ -298,7 +297,7 @@ pub fn write_curves<E: Serialize + ?Sized>(
     stem: &str,
     curves: &[Curve],
     extra: &E,
-) -> Result<(), PlotError> {
+) -> Result<(), FigureError> {
     let rows: Vec<SweepRow> = curves.iter().flat_map(|c| c.rows.clone()).collect();
     report.sweep_rows(&format!("{stem}.csv"), &rows)?;
     let body = CurvesBody {
@@ -324,18 +323,15 @@ pub fn write_curves<E: Serialize + ?Sized>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::cli::Parsed;
 
     fn args(out: &std::path::Path) -> FigureArgs {
         let out = out.to_str().unwrap().to_string();
-        let Parsed::Run(a) = FigureArgs::try_parse_from(
+        FigureArgs::try_parse_from(
             "fig_t",
+            "",
             ["--quick", "--seed", "3", "--threads", "1", "--out", &out],
         )
-        .unwrap() else {
-            panic!("help")
-        };
-        a
+        .unwrap()
     }
 
     #[test]

@@ -6,10 +6,9 @@
 use serde::Serialize;
 use spinball_analysis::precision::LcnTrace;
 
-use crate::RGBColor;
-use crate::colormap::viridis;
 use crate::csv::Csv;
-use crate::lines::{Legend, LineKind, LinePlot, Series};
+use spinball_plot::{Legend, LineKind, LinePlot, Series};
+use spinball_plot::{RGBColor, viridis};
 
 /// The columns of [`lcn_trace_rows`].
 pub const LCN_TRACE_COLUMNS: [&str; 5] = ["table", "alpha", "collisions", "time", "lambda"];
@@ -75,11 +74,11 @@ pub fn lcn_trace_panel(title: &str, traces: &[(f64, LcnTrace)], one_over_t: bool
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plot::Plot;
     use spinball_analysis::estimators::Method;
     use spinball_analysis::precision::lcn_traces;
     use spinball_core::State;
     use spinball_geometry::{Circle, DVec2};
+    use spinball_plot::Plot;
 
     #[test]
     fn rows_records_and_panel_of_circle_traces() {

@@ -10,14 +10,12 @@
 use spinball_analysis::diagnostics::initial_mean_speed;
 use spinball_core::Sampler;
 
-use crate::RGBColor;
-use crate::colormap::palette;
 use crate::curves::Curve;
 use crate::figure::BoxError;
-use crate::grid::Grid;
-use crate::lines::{Legend, LineKind, LinePlot, Series};
 use crate::measured::{ALPHA_LABEL, LAMBDA_LABEL, measured};
 use crate::rates::CurveRates;
+use spinball_plot::{Grid, Legend, LineKind, LinePlot, Series};
+use spinball_plot::{RGBColor, palette};
 
 /// The y label of the ν panels.
 const RELATIVE: &str = "ν / ν_Santaló(α = 0)";
@@ -104,10 +102,10 @@ pub fn collision_rate_grid(
 mod tests {
     use super::*;
     use crate::plan::Plan;
-    use crate::plot::Plot;
     use spinball_analysis::run::{AlphaSweep, Ensemble, Threads};
     use spinball_core::SpinLaw;
     use spinball_geometry::Table;
+    use spinball_plot::Plot;
 
     #[test]
     fn grid_and_rates_of_two_samplers() {

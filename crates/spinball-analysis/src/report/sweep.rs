@@ -1,9 +1,12 @@
-//! The JSON document of the `sweep` example (the machine interface): the
-//! settings and one point per α, rewritten after every point so that a long
-//! sweep leaves its finished points behind.
+//! # The sweep document
+//!
+//! The JSON document of `spinball sweep` (the machine interface for
+//! scripts): the settings and one point per α. The command rewrites it
+//! after every point so that a long sweep leaves its finished points behind.
 //!
 //! Scripts read this format, so it is a fixed, typed record
-//! ([`SweepDocument`], [`SweepPoint`]) serialised with serde:
+//! ([`SweepDocument`], [`SweepPoint`]), serialised with serde (feature
+//! `serde`):
 //!
 //! ```json
 //! {"table": "stadium:a=1", "method": "fd", "sampler": "paper", "seed": 1,
@@ -19,18 +22,17 @@
 //! `n_collisions` is the number of collisions per initial condition,
 //! `wall_time_s` the time spent on that point; exponents are per unit time.
 
-use std::path::{Path, PathBuf};
+use std::fmt::Display;
 
-use serde::Serialize;
-use spinball_analysis::estimators::{CHAOS_THRESHOLD, Method};
-use spinball_analysis::report::BudgetRow;
-use spinball_analysis::run::LyapunovEstimate;
+use spinball_core::Sampler;
 
-use crate::cli::SweepArgs;
-use crate::error::PlotError;
+use super::rows::BudgetRow;
+use crate::estimators::{CHAOS_THRESHOLD, Method};
+use crate::run::LyapunovEstimate;
 
-/// One α of a sweep.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+/// One α of a sweep. Serialisable with the `serde` feature.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct SweepPoint {
     /// Spin parameter.
     pub alpha: f64,
@@ -58,7 +60,7 @@ pub struct SweepPoint {
     pub stop: String,
     /// The point's error budget (SEM, finite-time and method bias, total),
     /// if it was measured.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub error_budget: Option<BudgetRow>,
 }
 
@@ -82,8 +84,10 @@ impl From<&LyapunovEstimate> for SweepPoint {
     }
 }
 
-/// The whole document: settings and the points so far.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+/// The whole document: settings and the points so far. Serialisable with
+/// the `serde` feature.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct SweepDocument {
     /// Table spec.
     pub table: String,
@@ -101,108 +105,72 @@ pub struct SweepDocument {
     pub version: String,
     /// One point per finished α.
     pub points: Vec<SweepPoint>,
-    #[serde(skip)]
-    path: PathBuf,
 }
 
 impl SweepDocument {
-    /// An empty document for `args`, written to `args.json` at once (so an
-    /// unwritable path fails before any computing).
-    ///
-    /// # Errors
-    /// [`PlotError::Io`] if the file cannot be written.
-    pub fn create(args: &SweepArgs) -> Result<Self, PlotError> {
-        let doc = SweepDocument {
-            table: args.table.to_string(),
-            method: args.method.name().to_string(),
-            sampler: args.sampler.name().to_string(),
-            seed: args.seed,
-            delta0: match args.method {
+    /// An empty document: a sweep on `table` (its spec) by `method`, from
+    /// `sampler`'s initial conditions of `seed`.
+    pub fn new(table: &impl Display, method: Method, sampler: Sampler, seed: u64) -> Self {
+        SweepDocument {
+            table: table.to_string(),
+            method: method.name().to_string(),
+            sampler: sampler.name().to_string(),
+            seed,
+            delta0: match method {
                 Method::FiniteDifference { delta0 } => Some(delta0),
                 Method::Tangent => None,
             },
             threshold: CHAOS_THRESHOLD,
             version: env!("CARGO_PKG_VERSION").to_string(),
             points: Vec::new(),
-            path: args.json.clone(),
-        };
-        doc.write()?;
-        Ok(doc)
+        }
     }
 
-    /// Add the point of `estimate` and rewrite the file.
-    ///
-    /// # Errors
-    /// [`PlotError::Io`] if the file cannot be written.
-    pub fn push(&mut self, estimate: &LyapunovEstimate) -> Result<(), PlotError> {
+    /// Add the point of `estimate`.
+    pub fn push(&mut self, estimate: &LyapunovEstimate) {
         self.points.push(SweepPoint::from(estimate));
-        self.write()
     }
 
-    /// Add the point of `estimate` with its error budget and rewrite the
-    /// file.
-    ///
-    /// # Errors
-    /// [`PlotError::Io`] if the file cannot be written.
-    pub fn push_with_budget(
-        &mut self,
-        estimate: &LyapunovEstimate,
-        budget: BudgetRow,
-    ) -> Result<(), PlotError> {
+    /// Add the point of `estimate` with its error budget.
+    pub fn push_with_budget(&mut self, estimate: &LyapunovEstimate, budget: BudgetRow) {
         self.points.push(SweepPoint {
             error_budget: Some(budget),
             ..SweepPoint::from(estimate)
         });
-        self.write()
-    }
-
-    /// Where the document is written.
-    pub fn path(&self) -> &Path {
-        &self.path
-    }
-
-    fn write(&self) -> Result<(), PlotError> {
-        let text = serde_json::to_string_pretty(self).map_err(|source| PlotError::Json {
-            path: self.path.clone(),
-            source,
-        })?;
-        std::fs::write(&self.path, text + "\n").map_err(|source| PlotError::Io {
-            path: self.path.clone(),
-            source,
-        })
     }
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "serde"))]
 mod tests {
+    use spinball_core::SpinLaw;
+    use spinball_geometry::Table;
+
     use super::*;
-    use crate::cli::Parsed;
+    use crate::run::Ensemble;
 
     #[test]
-    fn document_is_rewritten_after_every_point() {
-        let path = std::env::temp_dir().join(format!("spinball-sweep-{}.json", std::process::id()));
-        let line = format!(
-            "--table stadium:a=1 --alphas 0.5 --ics 4 --collisions 300 --method fd --seed 2 --json {}",
-            path.display()
-        );
-        let Parsed::Run(args) = SweepArgs::try_parse_from(line.split(' ')).unwrap() else {
-            panic!("help")
-        };
-        let mut doc = SweepDocument::create(&args).unwrap();
-        let read = || -> serde_json::Value {
-            serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap()
-        };
-        let empty = read();
+    fn document_has_the_settings_and_a_field_per_point() {
+        let table: Table = "stadium:a=1".parse().unwrap();
+        let mut doc = SweepDocument::new(&table, Method::default(), Sampler::Paper, 2);
+        let empty = serde_json::to_value(&doc).unwrap();
         assert_eq!(empty["table"], "stadium:a=1");
         assert_eq!(
             (empty["method"].as_str(), empty["delta0"].as_f64()),
             (Some("fd"), Some(1e-7))
         );
-        assert_eq!(empty["seed"], 2);
+        assert_eq!(
+            (empty["sampler"].as_str(), empty["seed"].as_u64()),
+            (Some("paper"), Some(2))
+        );
         assert_eq!(empty["points"].as_array().unwrap().len(), 0);
-        let e = args.ensemble(args.laws[0]).run().unwrap();
-        doc.push(&e).unwrap();
-        let one = read();
+        let e = Ensemble::new(table, SpinLaw::new(0.5).unwrap())
+            .with_seed(2)
+            .with_ics(4)
+            .with_collisions(300)
+            .run()
+            .unwrap();
+        doc.push(&e);
+        let one = serde_json::to_value(&doc).unwrap();
         let p = &one["points"][0];
         assert_eq!(
             (p["alpha"].as_f64(), p["mean"].as_f64()),
@@ -212,15 +180,10 @@ mod tests {
             (p["n_ics"].as_u64(), p["n_collisions"].as_u64()),
             (Some(4), Some(300))
         );
-        assert!(one.get("path").is_none());
-        std::fs::remove_file(&path).unwrap();
-        let bad = SweepArgs {
-            json: PathBuf::from("/nonexistent/dir/s.json"),
-            ..args
-        };
-        assert!(matches!(
-            SweepDocument::create(&bad),
-            Err(PlotError::Io { .. })
-        ));
+        assert!(p.get("error_budget").is_none());
+        let tangent = SweepDocument::new(&table, Method::Tangent, Sampler::Microcanonical, 0);
+        let t = serde_json::to_value(&tangent).unwrap();
+        assert!(t["delta0"].is_null());
+        assert_eq!(t["sampler"], "microcanonical");
     }
 }

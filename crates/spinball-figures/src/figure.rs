@@ -7,7 +7,7 @@
 //!
 //! ```no_run
 //! use std::process::ExitCode;
-//! use spinball_plot::{Csv, run_figure};
+//! use spinball_figures::{Csv, run_figure};
 //!
 //! fn main() -> ExitCode {
 //!     run_figure("fig_demo", "A demo figure.", |args, report| {
@@ -22,7 +22,9 @@
 use std::error::Error;
 use std::process::ExitCode;
 
-use crate::cli::{ArgError, FigureArgs, Opt, usage_with};
+use clap::{Args, FromArgMatches};
+
+use crate::args::FigureArgs;
 use crate::report::Report;
 
 /// The error of an example's body.
@@ -35,35 +37,41 @@ pub fn run_figure<F>(name: &str, about: &str, body: F) -> ExitCode
 where
     F: FnOnce(&FigureArgs, &mut Report) -> Result<(), BoxError>,
 {
-    run_figure_with(name, about, &[], body)
+    let args = FigureArgs::parse_or_exit(name, about);
+    run_body(name, &args, |report| body(&args, report))
 }
 
-/// [`run_figure`] for an example with options of its own (`extra`, read
-/// into [`FigureArgs::extra`]). A body that fails on reading one of them
-/// (an [`ArgError`], e.g. from [`Matches::get`](crate::cli::Matches::get))
-/// exits like a bad argument: message, usage, exit code 2.
-pub fn run_figure_with<F>(name: &str, about: &str, extra: &[Opt], body: F) -> ExitCode
+/// [`run_figure`] for an example with options of its own: `E`, a
+/// `#[derive(clap::Args)]` struct read beside the shared options and handed
+/// to `body`.
+pub fn run_figure_with<E, F>(name: &str, about: &str, body: F) -> ExitCode
 where
-    F: FnOnce(&FigureArgs, &mut Report) -> Result<(), BoxError>,
+    E: Args + FromArgMatches,
+    F: FnOnce(&FigureArgs, &E, &mut Report) -> Result<(), BoxError>,
 {
-    let args = FigureArgs::parse_or_exit_with(name, about, extra);
-    let mut report = Report::new(name, &args);
-    let result = body(&args, &mut report);
-    finish(name, &usage_with(name, about, extra), &report, result)
+    let (args, own) = FigureArgs::parse_or_exit_with::<E>(name, about);
+    run_body(name, &args, |report| body(&args, &own, report))
+}
+
+/// Run `body` with a fresh report and turn its result into the exit code.
+fn run_body(
+    name: &str,
+    args: &FigureArgs,
+    body: impl FnOnce(&mut Report) -> Result<(), BoxError>,
+) -> ExitCode {
+    let mut report = Report::new(name, args);
+    let result = body(&mut report);
+    finish(name, &report, result)
 }
 
 /// The exit code of a finished body (the closing line or the error printed).
-fn finish(name: &str, usage: &str, report: &Report, result: Result<(), BoxError>) -> ExitCode {
+fn finish(name: &str, report: &Report, result: Result<(), BoxError>) -> ExitCode {
     match result {
         Ok(()) => {
             if !report.files().is_empty() {
                 report.finish();
             }
             ExitCode::SUCCESS
-        }
-        Err(e) if e.downcast_ref::<ArgError>().is_some() => {
-            eprintln!("{name}: {e}\n\n{usage}");
-            ExitCode::from(2)
         }
         Err(e) => {
             eprintln!("{name}: {e}");
@@ -75,25 +83,15 @@ fn finish(name: &str, usage: &str, report: &Report, result: Result<(), BoxError>
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::cli::Parsed;
 
     #[test]
     fn errors_exit_with_failure() {
-        let Parsed::Run(args) =
-            FigureArgs::try_parse_from("fig_x", ["--out", "/nonexistent/x"]).unwrap()
-        else {
-            panic!("help")
-        };
+        let args = FigureArgs::try_parse_from("fig_x", "", ["--out", "/nonexistent/x"]).unwrap();
         let report = Report::new("fig_x", &args);
-        assert_eq!(finish("fig_x", "", &report, Ok(())), ExitCode::SUCCESS);
+        assert_eq!(finish("fig_x", &report, Ok(())), ExitCode::SUCCESS);
         assert_eq!(
-            finish("fig_x", "", &report, Err("boom".into())),
+            finish("fig_x", &report, Err("boom".into())),
             ExitCode::FAILURE
-        );
-        let bad = ArgError::invalid("alpha", "x", "not a number");
-        assert_eq!(
-            finish("fig_x", "", &report, Err(bad.into())),
-            ExitCode::from(2)
         );
     }
 }

@@ -8,7 +8,7 @@
 //! `main`.
 //!
 //! ```no_run
-//! # use spinball_plot::{Curve, CurveRates};
+//! # use spinball_figures::{Curve, CurveRates};
 //! # fn demo(curve: &Curve) -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
 //! let rates = CurveRates::of(curve)?;
 //! println!("{rates}"); // "stadium: nu falls 9.8% from alpha 0 to 1; …"

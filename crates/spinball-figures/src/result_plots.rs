@@ -12,7 +12,8 @@
 //! use spinball_analysis::run::Ensemble;
 //! use spinball_core::SpinLaw;
 //! use spinball_geometry::Stadium;
-//! use spinball_plot::{Plot, ftle_histogram};
+//! use spinball_figures::ftle_histogram;
+//! use spinball_plot::Plot;
 //!
 //! let e = Ensemble::new(Stadium::new(1.0)?, SpinLaw::new(0.5)?)
 //!     .with_ics(16)
@@ -25,11 +26,9 @@
 use spinball_analysis::AnalysisError;
 use spinball_analysis::run::{LyapunovEstimate, SpectrumEstimate};
 
-use crate::RGBColor;
-use crate::colormap::palette;
-use crate::grid::Grid;
-use crate::histogram::{HistogramPlot, Marker};
-use crate::lines::{Legend, LineKind, LinePlot, Series};
+use spinball_plot::{
+    Grid, HistogramPlot, Legend, LineKind, LinePlot, Marker, RGBColor, Series, palette,
+};
 
 /// Subscripts of the five exponents.
 const SUB: [&str; 5] = ["₁", "₂", "₃", "₄", "₅"];
@@ -179,10 +178,10 @@ mod tests {
 
     #[test]
     fn spectra_against_alpha() {
-        use crate::plot::Plot;
         use spinball_analysis::estimators::{Method, SpectrumOptions};
         use spinball_analysis::run::{Threads, spectrum_ensemble};
         use spinball_core::{Billiard, Sampler, SpinLaw};
+        use spinball_plot::Plot;
         let run = |alpha| {
             let billiard = Billiard::new(
                 spinball_geometry::Stadium::new(1.0).unwrap(),

@@ -9,7 +9,7 @@
 use spinball_analysis::phase_space::SectionPoint;
 
 use crate::csv::Csv;
-use crate::phase_plot::{MapPlot, Scatter3d};
+use spinball_plot::{MapPlot, Scatter3d};
 
 /// The columns of [`section_rows`].
 pub const SECTION_COLUMNS: [&str; 7] = ["table", "orbit", "s", "sin_theta", "u", "wall", "q"];
@@ -69,11 +69,11 @@ pub fn section_cloud<'a>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plot::Plot;
     use spinball_analysis::phase_space::sampled_sections;
     use spinball_analysis::run::Threads;
     use spinball_core::{Billiard, Sampler, SpinLaw};
     use spinball_geometry::{Boundary, Stadium};
+    use spinball_plot::Plot;
 
     #[test]
     fn rows_and_panels_of_sampled_orbits() {

@@ -10,8 +10,7 @@
 //!
 //! ```no_run
 //! use spinball_analysis::precision::Measurement;
-//! use spinball_plot::cli::FigureArgs;
-//! use spinball_plot::{Csv, Report};
+//! use spinball_figures::{FigureArgs, Csv, Report};
 //!
 //! let args = FigureArgs::parse_or_exit("fig_demo", "A demo.");
 //! let mut report = Report::new("fig_demo", &args);
@@ -20,7 +19,7 @@
 //! report.csv("demo.csv", &csv)?;
 //! report.json("demo.json", &serde_json::json!({"lambda": Measurement::new(0.183, 0.001)}))?;
 //! report.finish(); // "fig_demo (default mode, 2 threads): wrote out/fig_demo/demo.csv, … in 0.0 s"
-//! # Ok::<(), spinball_plot::PlotError>(())
+//! # Ok::<(), spinball_figures::FigureError>(())
 //! ```
 
 use std::path::{Path, PathBuf};
@@ -30,10 +29,10 @@ use npyz::WriterBuilder;
 use serde::Serialize;
 use spinball_analysis::report::{SweepRow, write_csv};
 
-use crate::cli::FigureArgs;
+use crate::args::FigureArgs;
 use crate::csv::Csv;
-use crate::error::PlotError;
-use crate::plot::Plot;
+use crate::error::FigureError;
+use spinball_plot::Plot;
 
 /// What every JSON document of a figure starts with.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
@@ -99,8 +98,8 @@ impl Report {
     /// closing line; for files written by other means.
     ///
     /// # Errors
-    /// [`PlotError::Io`] if the directory cannot be created.
-    pub fn path(&mut self, file: &str) -> Result<PathBuf, PlotError> {
+    /// [`FigureError::Io`] if the directory cannot be created.
+    pub fn path(&mut self, file: &str) -> Result<PathBuf, FigureError> {
         std::fs::create_dir_all(&self.out).map_err(|source| io(&self.out, source))?;
         let path = self.out.join(file);
         if !self.files.contains(&path) {
@@ -118,7 +117,7 @@ impl Report {
         file: &str,
         plot: &P,
         (width, height): (u32, u32),
-    ) -> Result<PathBuf, PlotError> {
+    ) -> Result<PathBuf, FigureError> {
         let path = self.path(file)?;
         plot.save_png(&path, width, height)?;
         Ok(path)
@@ -127,8 +126,8 @@ impl Report {
     /// Write `text` to `file`.
     ///
     /// # Errors
-    /// [`PlotError::Io`].
-    pub fn text(&mut self, file: &str, text: &str) -> Result<PathBuf, PlotError> {
+    /// [`FigureError::Io`].
+    pub fn text(&mut self, file: &str, text: &str) -> Result<PathBuf, FigureError> {
         let path = self.path(file)?;
         std::fs::write(&path, text).map_err(|source| io(&path, source))?;
         Ok(path)
@@ -137,8 +136,8 @@ impl Report {
     /// Write `csv` to `file`.
     ///
     /// # Errors
-    /// [`PlotError::Io`].
-    pub fn csv(&mut self, file: &str, csv: &Csv) -> Result<PathBuf, PlotError> {
+    /// [`FigureError::Io`].
+    pub fn csv(&mut self, file: &str, csv: &Csv) -> Result<PathBuf, FigureError> {
         self.text(file, csv.as_str())
     }
 
@@ -146,8 +145,8 @@ impl Report {
     /// columns).
     ///
     /// # Errors
-    /// [`PlotError::Io`].
-    pub fn sweep_rows(&mut self, file: &str, rows: &[SweepRow]) -> Result<PathBuf, PlotError> {
+    /// [`FigureError::Io`].
+    pub fn sweep_rows(&mut self, file: &str, rows: &[SweepRow]) -> Result<PathBuf, FigureError> {
         let mut text = Vec::new();
         write_csv(&mut text, rows).map_err(|source| io(Path::new(file), source))?;
         let path = self.path(file)?;
@@ -159,11 +158,16 @@ impl Report {
     /// array, for `numpy.load`.
     ///
     /// # Errors
-    /// [`PlotError::Invalid`] if the shape does not hold `values.len()`
-    /// numbers, [`PlotError::Io`].
-    pub fn npy(&mut self, file: &str, shape: &[u64], values: &[f64]) -> Result<PathBuf, PlotError> {
+    /// [`FigureError::Invalid`] if the shape does not hold `values.len()`
+    /// numbers, [`FigureError::Io`].
+    pub fn npy(
+        &mut self,
+        file: &str,
+        shape: &[u64],
+        values: &[f64],
+    ) -> Result<PathBuf, FigureError> {
         if shape.iter().product::<u64>() != values.len() as u64 {
-            return Err(PlotError::Invalid {
+            return Err(FigureError::Invalid {
                 what: "NPY shape",
                 why: format!("{shape:?} does not hold {} values", values.len()),
             });
@@ -186,19 +190,19 @@ impl Report {
     /// fields of `body` (a struct or map), pretty-printed.
     ///
     /// # Errors
-    /// [`PlotError::Json`] if `body` is not a struct or map (or fails to
-    /// serialise), [`PlotError::Io`].
+    /// [`FigureError::Json`] if `body` is not a struct or map (or fails to
+    /// serialise), [`FigureError::Io`].
     pub fn json<T: Serialize + ?Sized>(
         &mut self,
         file: &str,
         body: &T,
-    ) -> Result<PathBuf, PlotError> {
+    ) -> Result<PathBuf, FigureError> {
         let doc = Document {
             header: &self.header,
             body,
         };
         let path = self.out.join(file);
-        let text = serde_json::to_string_pretty(&doc).map_err(|source| PlotError::Json {
+        let text = serde_json::to_string_pretty(&doc).map_err(|source| FigureError::Json {
             path: path.clone(),
             source,
         })?;
@@ -224,8 +228,8 @@ impl Report {
     }
 }
 
-fn io(path: &Path, source: std::io::Error) -> PlotError {
-    PlotError::Io {
+fn io(path: &Path, source: std::io::Error) -> FigureError {
+    FigureError::Io {
         path: path.to_path_buf(),
         source,
     }
@@ -234,17 +238,15 @@ fn io(path: &Path, source: std::io::Error) -> PlotError {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::cli::Parsed;
 
     fn report(dir: &Path) -> Report {
         let out = dir.to_str().unwrap().to_string();
-        let Parsed::Run(args) = FigureArgs::try_parse_from(
+        let args = FigureArgs::try_parse_from(
             "fig_test",
+            "",
             ["--quick", "--seed", "5", "--threads", "2", "--out", &out],
         )
-        .unwrap() else {
-            panic!("help")
-        };
+        .unwrap();
         Report::new("fig_test", &args)
     }
 
@@ -282,7 +284,7 @@ mod tests {
         // A body that is not a struct or map has no fields to merge.
         assert!(matches!(
             r.json("b.json", &3.5),
-            Err(PlotError::Json { .. })
+            Err(FigureError::Json { .. })
         ));
         std::fs::remove_dir_all(&dir).unwrap();
     }

@@ -11,7 +11,7 @@
 //! use spinball_analysis::run::{AlphaSweep, Ensemble};
 //! use spinball_core::SpinLaw;
 //! use spinball_geometry::Stadium;
-//! use spinball_plot::Progress;
+//! use spinball_figures::Progress;
 //!
 //! let template = Ensemble::new(Stadium::new(1.0)?, SpinLaw::specular())
 //!     .with_ics(8)

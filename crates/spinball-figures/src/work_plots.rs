@@ -7,9 +7,9 @@ use spinball_analysis::estimators::Method;
 use spinball_analysis::precision::{Planner, Reference, WorkPoint};
 use spinball_analysis::run::Engine;
 
-use crate::colormap::palette;
 use crate::csv::{Csv, optional};
-use crate::lines::{LineKind, LinePlot, Series};
+use spinball_plot::palette;
+use spinball_plot::{LineKind, LinePlot, Series};
 
 /// `FD δ0=1e-7, lanes` or `tangent, scalar`.
 #[must_use]

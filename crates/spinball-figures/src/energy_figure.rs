@@ -10,10 +10,9 @@
 
 use spinball_analysis::diagnostics::{EnergyConservation, EnergyHistory, EnergyTrace};
 
-use crate::RGBColor;
-use crate::colormap::viridis;
 use crate::csv::Csv;
-use crate::lines::{Legend, LineKind, LinePlot, Series};
+use spinball_plot::{Legend, LineKind, LinePlot, Series};
+use spinball_plot::{RGBColor, viridis};
 
 /// Where exact zeros are drawn on the log axes.
 pub const ENERGY_FLOOR: f64 = 1e-18;
@@ -134,10 +133,10 @@ impl EnergyPanels {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plot::Plot;
     use spinball_analysis::diagnostics::energy_conservation;
     use spinball_core::{Billiard, SpinLaw, State};
     use spinball_geometry::{DVec2, Stadium};
+    use spinball_plot::Plot;
 
     #[test]
     fn rows_and_panels_of_one_start() {

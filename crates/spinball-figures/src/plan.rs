@@ -8,7 +8,7 @@
 //! numbers in an example.
 //!
 //! ```
-//! use spinball_plot::{Plan, unit_grid};
+//! use spinball_figures::{Plan, unit_grid};
 //! let plan = Plan::until(0.01, 200, 1_000, 20_000, 10_000);
 //! assert_eq!(
 //!     plan.to_string(),

@@ -11,7 +11,8 @@
 //! ```
 //! use spinball_analysis::diagnostics;
 //! use spinball_analysis::precision::Measurement;
-//! use spinball_plot::{LinePlot, measured, paper_markers, palette, ALPHA_LABEL};
+//! use spinball_figures::{measured, paper_markers, ALPHA_LABEL};
+//! use spinball_plot::{LinePlot, palette};
 //!
 //! let ours = [(0.0, Measurement::new(0.430, 0.002)), (1.0, Measurement::new(0.147, 0.002))];
 //! let plot = LinePlot::new()
@@ -23,8 +24,7 @@
 
 use spinball_analysis::precision::Measurement;
 
-use crate::RGBColor;
-use crate::lines::Series;
+use spinball_plot::{RGBColor, Series};
 
 /// x-axis label of every λ(α) plot.
 pub const ALPHA_LABEL: &str = "spin parameter α = I/(m r²)";
@@ -89,7 +89,7 @@ pub fn paper_markers(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{LinePlot, Plot, PlotError};
+    use spinball_plot::{LinePlot, Plot, PlotError};
 
     #[test]
     fn measured_points_keep_their_errors() {

@@ -1,0 +1,118 @@
+//! The paper's figures, for the spinball examples: what a `fig_*` example
+//! composes, so that each example is only a short body.
+//!
+//! # Why this crate exists
+//! The figures need a command line, sweeps sized per mode with progress on
+//! stderr, figure panels made from analysis results, and CSV, JSON and NPY
+//! files beside each PNG. None of that belongs in the libraries a user
+//! depends on: `spinball-analysis` computes (it never parses arguments,
+//! draws or writes files), `spinball-plot` draws arrays and tables (it never
+//! parses arguments, writes documents or runs estimates), and the `spinball`
+//! command line (`spinball-cli`) is the interface for scripts, including
+//! `spinball sweep`. This crate is where the three meet for the paper's
+//! figures. It is unpublished (`publish = false`): its API serves the
+//! examples of this repository and changes with them.
+//!
+//! # Contents
+//! - [`run_figure`] and [`run_figure_with`]: the `main` of a figure. The
+//!   command line is read by clap ([`FigureArgs`]: `--out`, `--quick`,
+//!   `--paper`, `--seed`, `--threads`, plus an example's own
+//!   `#[derive(clap::Args)]` options), and a [`Report`] writes PNG, [`Csv`],
+//!   NPY and JSON files (serde, with a common [`Header`]);
+//! - [`Plan`], [`Job`], [`run_jobs`], [`Curve`]: λ(α) sweeps sized per mode,
+//!   run with rows on stdout and [`Progress`] on stderr, written with
+//!   [`write_curves`]; [`run_scan`] for families of tables with their curved
+//!   share;
+//! - figures of one analysis each, with their CSV rows: [`EnergyPanels`]
+//!   (energy conservation), [`section_panel`] (Poincaré sections),
+//!   [`island_panel`] (FTLE maps with the bouncing-ball island),
+//!   [`kac_histogram`] (return times against Kac's lemma),
+//!   [`q_class_panel`] and [`q_conserved_panel`] (`ΔQ` between collisions),
+//!   [`lcn_trace_panel`] (single-trajectory LCN traces),
+//!   [`collision_rate_grid`] (ν and λ/ν against α),
+//!   [`ftle_histogram`] and [`spectrum_grid`] (the Lyapunov spectrum against
+//!   α), work–precision charts ([`error_vs_time`] and friends);
+//! - [`measured`] and [`paper_markers`]: series of values ± SEM and of the
+//!   paper's numbers ([`spinball_analysis::diagnostics`]); [`table_i_markdown`]
+//!   and friends ([`table_i_rows`], [`table_i_grid`]) set our convergence
+//!   table beside the paper's Table I;
+//! - CSV tables of results that are not one
+//!   [`SweepRow`](spinball_analysis::report::SweepRow) per point
+//!   ([`trajectories_csv`], [`summary_csv`], [`spectra_csv`], ...).
+//!
+//! ```no_run
+//! use std::process::ExitCode;
+//! use spinball_figures::{Job, Plan, run_figure, run_jobs, template, write_curves};
+//!
+//! fn main() -> ExitCode {
+//!     run_figure("fig_demo", "λ(α) of the stadium.", |args, report| {
+//!         let plan = args.pick(Plan::fixed(48, 2_000), Plan::fixed(1_000, 10_000), Plan::fixed(100_000, 50_000));
+//!         let job = Job::new("stadium a = 1", &plan, template(args, "stadium:a=1")?, &[0.0, 0.5, 1.0])?;
+//!         let curves = run_jobs(vec![job])?;
+//!         write_curves(report, "demo", &curves, &())?;
+//!         Ok(())
+//!     })
+//! }
+//! ```
+#![forbid(unsafe_code)]
+
+mod args;
+mod csv;
+mod curves;
+mod energy_figure;
+mod error;
+mod figure;
+mod island_figure;
+mod kac_figure;
+mod lcn_figure;
+mod measured;
+mod plan;
+mod progress;
+mod q_figure;
+mod rate_figure;
+mod rates;
+mod report;
+mod result_plots;
+mod result_tables;
+mod scan;
+mod section_figure;
+mod table_i;
+mod work_plots;
+
+pub use args::{DEFAULT_SEED, FigureArgs, Mode, NoOptions, usage};
+pub use csv::{Csv, optional};
+pub use curves::{Curve, CurveSummary, Job, run_jobs, template, write_curves};
+pub use energy_figure::{
+    ENERGY_FLOOR, ENERGY_LONG_COLUMNS, ENERGY_TRACE_COLUMNS, EnergyPanels, energy_long_rows,
+    energy_trace_rows,
+};
+pub use error::FigureError;
+pub use figure::{BoxError, run_figure, run_figure_with};
+pub use island_figure::{ISLAND_COLUMNS, island_panel, island_row};
+pub use kac_figure::{
+    KAC_COLUMNS, KAC_ORBIT_COLUMNS, kac_histogram, kac_orbit_rows, kac_ratio_series, kac_row,
+};
+pub use lcn_figure::{LCN_TRACE_COLUMNS, LcnFinal, lcn_finals, lcn_trace_panel, lcn_trace_rows};
+pub use measured::{ALPHA_LABEL, LAMBDA_LABEL, measured, measured_band, paper_markers, scaled};
+pub use plan::{Plan, unit_grid};
+pub use progress::Progress;
+pub use q_figure::{
+    Q_ZERO_AT, q_class_panel, q_class_summaries, q_conserved_panel, q_histograms_csv, q_medians,
+};
+pub use rate_figure::collision_rate_grid;
+pub use rates::{CurveRates, relative_drop, relative_spread};
+pub use report::{Header, Report};
+pub use result_plots::{SpectrumPair, ftle_histogram, log_counts, spectrum_grid, spectrum_plot};
+pub use result_tables::{
+    histograms_csv, q_pairs_csv, q_populations, spectra_csv, spectrum_pairs_csv, summary_csv,
+    trajectories_csv,
+};
+pub use scan::{Scan, ShareRow, curved_shares, run_scan, share_range, shares_csv, write_shares};
+pub use section_figure::{SECTION_COLUMNS, section_cloud, section_panel, section_rows, shell_spin};
+pub use table_i::{
+    TableIColumn, TableIRecord, TableIRow, table_i_csv, table_i_grid, table_i_markdown,
+    table_i_paper, table_i_plot, table_i_reference, table_i_rows,
+};
+pub use work_plots::{
+    WORK_COLUMNS, bias_vs_t, error_vs_time, method_label, sem_vs_n, time_to_target, work_rows,
+};
