@@ -83,7 +83,8 @@ struct SharedOptions {
     threads: Option<NonZeroUsize>,
 }
 
-/// A command line: the shared options and the example's own.
+// A command line: the shared options and the example's own. (Not a doc
+// comment: clap would show it as the about line.)
 #[derive(Debug, Parser)]
 struct Line<E: Args> {
     #[command(flatten)]
@@ -205,11 +206,13 @@ impl FigureArgs {
 
 /// The clap command of the figure example `name` with its own options `E`.
 fn command<E: Args>(name: &str, about: &str) -> clap::Command {
+    // The about line is `about`, never a doc comment of the option structs.
     let command = Line::<E>::command()
         .name(name.to_string())
-        .bin_name(format!("cargo run --release --example {name} --"));
+        .bin_name(format!("cargo run --release --example {name} --"))
+        .long_about(None::<&str>);
     if about.is_empty() {
-        command
+        command.about(None::<&str>)
     } else {
         command.about(about.to_string())
     }
@@ -290,7 +293,8 @@ mod tests {
         assert_eq!((a.mode, own.alpha), (Mode::Quick, Some(-0.25)));
         assert!(run(&["--alpha", "1"]).is_err());
         let u = usage::<Own>("traj", "Trajectories.");
-        assert!(u.starts_with("Trajectories."), "{u}");
+        assert!(u.starts_with("Trajectories.\n"), "{u}");
+        assert!(!usage::<Own>("traj", "").contains("command line"), "{u}");
         assert!(u.contains("cargo run --release --example traj --"), "{u}");
         for option in [
             "--threads <N>",
