@@ -5,8 +5,10 @@
 //! of the baseline where the target has no SSE2, and the base of the
 //! operation-counting type of the tests. [`Wide`] turns one register into a
 //! group: `K` independent dependency chains the CPU overlaps, at every level.
-//! Nothing here is `unsafe`.
+//! The one `unsafe` operation is `each!`'s reading of the group it has
+//! just written, element by element.
 
+use std::mem::MaybeUninit;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 use super::{BitsOps, EXP_SHIFT, Lanes, MANTISSA, MaskOps, ONE_BITS, Palette, Records};
@@ -133,23 +135,57 @@ impl Lanes for f64 {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Wide<L, const K: usize>(pub [L; K]);
 
-/// Build `[T; K]` element by element (`T: Copy`). A plain loop rather than
-/// `std::array::from_fn`, whose helpers are not always inlined into the
-/// `#[target_feature]` functions (a call per operation, out of the vector
-/// context).
+/// The most registers a [`Wide`] group holds.
+pub(crate) const MAX_GROUP: usize = 4;
+
+/// Build `[T; K]` element by element (`K <= MAX_GROUP`), as straight-line
+/// code: no loop, no closure, no call.
+///
+/// Every operation of a group goes through here, thousands per kernel, so
+/// the shape matters for compile time as much as for speed: a loop (even
+/// one LLVM unrolls in the end, such as the repeat of `[x; K]` or a `while`
+/// over `0..K`) reaches the optimiser once per operation, and its loop
+/// passes then run once per loop over a function that keeps growing
+/// (docs/PERFORMANCE.md, "Build time"); `std::array::from_fn`'s helpers are
+/// not always inlined into the `#[target_feature]` functions (a call per
+/// operation, out of the vector context). Here the `if`s test a constant and
+/// fold away before any loop pass runs.
 macro_rules! each {
     ($k:expr, |$i:ident| $e:expr) => {{
-        let mut out = [{
+        const { assert!($k >= 1 && $k <= MAX_GROUP) };
+        let mut out = [const { MaybeUninit::uninit() }; $k];
+        {
             let $i = 0;
-            $e
-        }; $k];
-        let mut $i = 1;
-        while $i < $k {
-            out[$i] = $e;
-            $i += 1;
+            out[0].write($e);
         }
-        out
+        if $k > 1 {
+            let $i = 1;
+            out[1].write($e);
+        }
+        if $k > 2 {
+            let $i = 2;
+            out[2].write($e);
+        }
+        if $k > 3 {
+            let $i = 3;
+            out[3].write($e);
+        }
+        // SAFETY: `out` has `$k <= MAX_GROUP` elements (asserted above at
+        // compile time) and the blocks above wrote each of them.
+        unsafe { assume_init(&out) }
     }};
+}
+
+/// The array `a`, every element of which is initialised.
+///
+/// # Safety
+/// Every element of `a` must be initialised.
+#[inline(always)]
+unsafe fn assume_init<T, const K: usize>(a: &[MaybeUninit<T>; K]) -> [T; K] {
+    // SAFETY: `MaybeUninit<T>` has `T`'s layout, so `[MaybeUninit<T>; K]`
+    // has `[T; K]`'s; the caller promises every element is initialised, and
+    // the read copies them out of a live, aligned array.
+    unsafe { std::ptr::read(a.as_ptr().cast::<[T; K]>()) }
 }
 
 impl<M: MaskOps, const K: usize> MaskOps for Wide<M, K> {
