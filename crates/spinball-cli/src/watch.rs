@@ -110,11 +110,13 @@ impl RunObserver for Watch<'_> {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct TimeLimit(Option<Duration>);
 
-/// A number of seconds from the command line.
-fn seconds(s: &str) -> Result<f64, String> {
-    s.trim()
-        .parse::<f64>()
-        .map_err(|_| format!("`{s}` is not a number of seconds"))
+/// A number of seconds from the command line, or `range` (what works) as
+/// the error.
+fn seconds(s: &str, works: impl Fn(f64) -> bool, range: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(x) if works(x) => Ok(x),
+        _ => Err(range.into()),
+    }
 }
 
 /// Parse `--time-limit`: a number of seconds > 0; one beyond what a
@@ -123,13 +125,11 @@ fn seconds(s: &str) -> Result<f64, String> {
 /// # Errors
 /// The range that works, for zero, a negative number, NaN or not a number.
 pub fn parse_time_limit(s: &str) -> Result<TimeLimit, String> {
-    let x = seconds(s)?;
-    if !(x > 0.0) {
-        return Err(
-            "the limit must be a number of seconds > 0 (`inf` or anything above 9.2e18 is no limit)"
-                .into(),
-        );
-    }
+    let x = seconds(
+        s,
+        |x| x > 0.0,
+        "the limit must be a number of seconds > 0 (`inf` or anything above 9.2e18 is no limit)",
+    )?;
     Ok(TimeLimit(Duration::try_from_secs_f64(x).ok()))
 }
 
@@ -140,13 +140,11 @@ pub fn parse_time_limit(s: &str) -> Result<TimeLimit, String> {
 /// # Errors
 /// The range that works, for a negative number, NaN or not a number.
 pub fn parse_checkpoint_every(s: &str) -> Result<Duration, String> {
-    let x = seconds(s)?;
-    if !(x >= 0.0) {
-        return Err(
-            "the interval must be a number of seconds >= 0 (0 saves after every batch, `inf` only when the run stops)"
-                .into(),
-        );
-    }
+    let x = seconds(
+        s,
+        |x| x >= 0.0,
+        "the interval must be a number of seconds >= 0 (0 saves after every batch, `inf` only when the run stops)",
+    )?;
     Ok(Duration::try_from_secs_f64(x).unwrap_or(Duration::MAX))
 }
 
