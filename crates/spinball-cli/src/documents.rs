@@ -10,6 +10,7 @@ use serde::{Deserialize, Serialize};
 use spinball_analysis::run::{LyapunovEstimate, PartialRun, Shard};
 
 use crate::error::CliError;
+use crate::files::write_atomic;
 
 /// The `kind` of a finished Lyapunov result.
 pub const RESULT_KIND: &str = "spinball.lyapunov";
@@ -88,16 +89,14 @@ impl PartialDocument {
 }
 
 /// Write `value` as JSON to `path`, atomically (a temporary file renamed
-/// over it), so a kill while writing never leaves a torn file.
+/// over it), so a kill while writing never leaves a torn file; a path that
+/// exists and is not a regular file is refused, never replaced (see
+/// [`write_atomic`]).
 ///
 /// # Errors
-/// [`CliError::Failed`] if the file cannot be written.
+/// [`CliError::Failed`] if the file cannot be written or `path` is not a
+/// regular file.
 pub fn write_json<T: Serialize>(path: &Path, value: &T) -> Result<(), CliError> {
     let text = serde_json::to_string(value).map_err(CliError::failed)?;
-    let mut tmp = path.as_os_str().to_owned();
-    tmp.push(".tmp");
-    let tmp = Path::new(&tmp);
-    fs::write(tmp, text + "\n")
-        .and_then(|()| fs::rename(tmp, path))
-        .map_err(|e| CliError::Failed(format!("cannot write {}: {e}", path.display())))
+    write_atomic(path, (text + "\n").as_bytes())
 }

@@ -2,8 +2,8 @@
 //!
 //! | code | meaning |
 //! |---|---|
-//! | 0 | done |
-//! | 1 | the run failed (a trajectory error, an unwritable output) |
+//! | 0 | done (also when stdout's reader closed it early, as `\| head` does: the rest is not printed, files are still written) |
+//! | 1 | the run failed (a trajectory error, an unwritable output, a full stdout) |
 //! | 2 | bad usage: an option, a table, a file that cannot work |
 //! | 3 | interrupted (signal or `--time-limit`); the checkpoint is written, rerun with `--resume` |
 
@@ -18,6 +18,10 @@ pub enum CliError {
     Usage(String),
     /// The run failed (exit code 1).
     Failed(String),
+    /// Stdout was closed by its reader (a broken pipe, as `| head`
+    /// leaves): nothing more is printed and the command succeeds (exit
+    /// code 0, no message), as Unix tools do.
+    StdoutClosed,
     /// Stopped by a signal or the time limit (exit code 3).
     Interrupted {
         /// Where what was finished was saved.
@@ -39,6 +43,7 @@ impl CliError {
     /// The process exit code.
     pub fn code(&self) -> ExitCode {
         ExitCode::from(match self {
+            CliError::StdoutClosed => 0,
             CliError::Failed(_) => 1,
             CliError::Usage(_) => 2,
             CliError::Interrupted { .. } => 3,
@@ -50,6 +55,7 @@ impl fmt::Display for CliError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             CliError::Usage(m) | CliError::Failed(m) => f.write_str(m),
+            CliError::StdoutClosed => f.write_str("stdout was closed by its reader"),
             CliError::Interrupted {
                 checkpoint: Some(p),
             } => write!(

@@ -7,18 +7,23 @@
 //! `merge` combines the shards into the unsharded result bitwise, `slurm`
 //! writes the job array. Tables are built-in specs or table files (TOML or
 //! JSON). Exit codes: 0 done, 1 the run failed, 2 bad usage, 3 interrupted
-//! (the checkpoint is saved; rerun with `--resume`).
+//! (the checkpoint is saved; rerun with `--resume`). Nothing panics on a
+//! full or closed stdout: a full one is exit code 1, a closed one (`| head`)
+//! ends the command quietly with 0.
 
 #![forbid(unsafe_code)]
 
 mod commands;
 mod documents;
 mod error;
+mod files;
 mod output;
 mod run_args;
+mod stdout;
 mod table_arg;
 mod watch;
 
+use std::io::{self, Write};
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
@@ -31,6 +36,8 @@ use crate::commands::spectrum::{SpectrumArgs, spectrum};
 use crate::commands::sweep::{SweepArgs, sweep};
 use crate::commands::table::{TableArgs, table};
 use crate::commands::trajectory::{TrajectoryArgs, trajectory};
+use crate::error::CliError;
+use crate::stdout::stdout_error;
 
 /// Spinning billiards: chaos indicators with honest error bars.
 #[derive(Debug, Parser)]
@@ -66,7 +73,10 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => return clap_exit(&e),
+    };
     let result = match &cli.command {
         Command::Lyapunov(a) => lyapunov(a),
         Command::Ftle(a) => ftle(a),
@@ -78,9 +88,31 @@ fn main() -> ExitCode {
         Command::Sweep(a) => sweep(a),
     };
     match result {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(()) | Err(CliError::StdoutClosed) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("spinball: {e}");
+            complain(&e);
+            e.code()
+        }
+    }
+}
+
+/// Say what failed on stderr; if even stderr cannot take it, the exit
+/// code still says it.
+fn complain(e: &impl std::fmt::Display) {
+    let _ = writeln!(io::stderr(), "spinball: {e}");
+}
+
+/// What clap's own messages end with: usage errors on stderr (exit code
+/// 2), `--help` and `--version` on stdout (0, or 1 if stdout is full).
+fn clap_exit(e: &clap::Error) -> ExitCode {
+    let printed = e.print().and_then(|()| io::stdout().flush());
+    if e.use_stderr() {
+        return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2));
+    }
+    match printed.map_err(|e| stdout_error(&e)) {
+        Ok(()) | Err(CliError::StdoutClosed) => ExitCode::SUCCESS,
+        Err(e) => {
+            complain(&e);
             e.code()
         }
     }

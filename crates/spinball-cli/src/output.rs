@@ -12,13 +12,16 @@ use spinball_analysis::run::LyapunovEstimate;
 
 use crate::documents::{ResultDocument, write_json};
 use crate::error::CliError;
+use crate::files::check_replaceable;
+use crate::stdout::print;
 
 /// Output options.
 #[derive(Debug, Clone, Args)]
 pub struct OutputArgs {
     /// Write the result as JSON (every statistic, the provenance and the
     /// per-initial-condition values). A sharded run writes its partial
-    /// result here.
+    /// result here. It is replaced atomically (through a temporary file),
+    /// so it must be a regular file, a link to one, or a new path.
     #[arg(long)]
     pub json: Option<PathBuf>,
     /// Write one CSV row per α.
@@ -61,24 +64,62 @@ pub fn write_text(path: &Path, text: &str) -> Result<(), CliError> {
 }
 
 impl OutputArgs {
+    /// Check, before a run, that `--json` can be replaced (it is written
+    /// through a temporary file renamed over it).
+    ///
+    /// # Errors
+    /// [`CliError::Usage`] if it exists and is not a regular file.
+    pub fn check(&self) -> Result<(), CliError> {
+        match &self.json {
+            Some(path) => check_replaceable("json", path),
+            None => Ok(()),
+        }
+    }
+
     /// Write finished estimates to every output asked for, and print a
     /// table on stdout unless quiet.
     ///
     /// # Errors
-    /// [`CliError::Failed`] for an output that cannot be written.
+    /// [`CliError::Failed`] for an output that cannot be written (stdout
+    /// included); [`CliError::StdoutClosed`] if stdout's reader went away
+    /// (the files are written all the same).
     pub fn write_results(&self, estimates: &[LyapunovEstimate]) -> Result<(), CliError> {
-        if !self.quiet {
-            println!(
-                "{:>10} {:>11} {:>10} {:>11} {:>7} {:>8} {:>9}",
+        let shown = self.show(estimates);
+        // The files are written even if stdout failed (full, or closed by
+        // `| head`): they are the result.
+        self.write_files(estimates)?;
+        shown
+    }
+
+    /// Print the table of `estimates` on stdout unless quiet.
+    ///
+    /// # Errors
+    /// [`CliError::Failed`] if stdout cannot take it,
+    /// [`CliError::StdoutClosed`] if its reader went away.
+    pub fn show(&self, estimates: &[LyapunovEstimate]) -> Result<(), CliError> {
+        if self.quiet {
+            Ok(())
+        } else {
+            let mut table = format!(
+                "{:>10} {:>11} {:>10} {:>11} {:>7} {:>8} {:>9}\n",
                 "alpha", "lambda", "SEM", "median", "f_ch", "ICs", "time/s"
             );
             for e in estimates {
-                println!(
-                    "{:>10} {:>11.6} {:>10.6} {:>11.6} {:>7.3} {:>8} {:>9.2}",
+                table.push_str(&format!(
+                    "{:>10} {:>11.6} {:>10.6} {:>11.6} {:>7.3} {:>8} {:>9.2}\n",
                     e.alpha, e.mean, e.sem, e.median, e.chaotic_fraction, e.n_ics, e.wall_time_s
-                );
+                ));
             }
+            print(&table)
         }
+    }
+
+    /// Write `estimates` to the files asked for (`--json`, `--csv`,
+    /// `--npy`).
+    ///
+    /// # Errors
+    /// [`CliError::Failed`] for a file that cannot be written.
+    pub fn write_files(&self, estimates: &[LyapunovEstimate]) -> Result<(), CliError> {
         if let Some(path) = &self.json {
             write_json(path, &ResultDocument::new(estimates.to_vec()))?;
         }

@@ -105,15 +105,92 @@ impl RunObserver for Watch<'_> {
     }
 }
 
-/// The instant a run of at most `seconds` that started now must stop.
-pub fn deadline(seconds: Option<f64>) -> Result<Option<Instant>, CliError> {
-    match seconds {
-        None => Ok(None),
-        Some(s) if s.is_finite() && s > 0.0 => {
-            Ok(Some(Instant::now() + Duration::from_secs_f64(s)))
+/// A `--time-limit`: how long a run may go, or no limit (a limit longer
+/// than a [`Duration`] can hold).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct TimeLimit(Option<Duration>);
+
+/// A number of seconds from the command line, or `range` (what works) as
+/// the error.
+fn seconds(s: &str, works: impl Fn(f64) -> bool, range: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(x) if works(x) => Ok(x),
+        _ => Err(range.into()),
+    }
+}
+
+/// Parse `--time-limit`: a number of seconds > 0; one beyond what a
+/// [`Duration`] holds (1.8e19 s) or `inf` is no limit.
+///
+/// # Errors
+/// The range that works, for zero, a negative number, NaN or not a number.
+pub fn parse_time_limit(s: &str) -> Result<TimeLimit, String> {
+    let x = seconds(
+        s,
+        |x| x > 0.0,
+        "the limit must be a number of seconds > 0 (`inf` or anything above 9.2e18 is no limit)",
+    )?;
+    Ok(TimeLimit(Duration::try_from_secs_f64(x).ok()))
+}
+
+/// Parse `--checkpoint-every`: a number of seconds >= 0; one beyond what
+/// a [`Duration`] holds (1.8e19 s) or `inf` is never (the checkpoint is
+/// saved only when the run stops).
+///
+/// # Errors
+/// The range that works, for a negative number, NaN or not a number.
+pub fn parse_checkpoint_every(s: &str) -> Result<Duration, String> {
+    let x = seconds(
+        s,
+        |x| x >= 0.0,
+        "the interval must be a number of seconds >= 0 (0 saves after every batch, `inf` only when the run stops)",
+    )?;
+    Ok(Duration::try_from_secs_f64(x).unwrap_or(Duration::MAX))
+}
+
+/// The instant a run limited to `limit` that starts now must stop: none
+/// without a limit, or if the limit ends beyond what the clock can count
+/// (about 9.2e18 s from boot), which no run reaches.
+pub fn deadline(limit: Option<TimeLimit>) -> Option<Instant> {
+    limit
+        .and_then(|TimeLimit(d)| d)
+        .and_then(|d| Instant::now().checked_add(d))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn time_limits() {
+        assert_eq!(
+            parse_time_limit("1.5"),
+            Ok(TimeLimit(Some(Duration::from_millis(1500))))
+        );
+        for s in ["1e300", "inf", "1e20"] {
+            assert_eq!(parse_time_limit(s), Ok(TimeLimit(None)), "{s}");
         }
-        Some(s) => Err(CliError::Usage(format!(
-            "--time-limit {s}: must be a positive number of seconds"
-        ))),
+        // Fits a Duration, but not the clock: no deadline, no panic.
+        let far = parse_time_limit("1e19").unwrap();
+        assert!(far.0.is_some());
+        assert_eq!(deadline(Some(far)), None);
+        assert!(deadline(parse_time_limit("1e-9").ok()).is_some());
+        for s in ["0", "-1", "nan", "-inf", "soon", ""] {
+            assert!(parse_time_limit(s).is_err(), "{s}");
+        }
+        assert!(parse_time_limit("0").unwrap_err().contains("> 0"));
+    }
+
+    #[test]
+    fn checkpoint_intervals() {
+        assert_eq!(parse_checkpoint_every("0"), Ok(Duration::ZERO));
+        assert_eq!(parse_checkpoint_every("60"), Ok(Duration::from_secs(60)));
+        for s in ["1e300", "inf", "1e20"] {
+            assert_eq!(parse_checkpoint_every(s), Ok(Duration::MAX), "{s}");
+        }
+        for s in ["-1", "nan", "-inf", "often"] {
+            assert!(parse_checkpoint_every(s).is_err(), "{s}");
+        }
+        assert!(parse_checkpoint_every("-1").unwrap_err().contains(">= 0"));
     }
 }

@@ -54,7 +54,10 @@ pub fn ftle(args: &FtleArgs) -> Result<(), CliError> {
         Outcome::Finished(e) => e,
         Outcome::Shard => return Ok(()),
     };
-    l.out.write_results(&estimates)?;
+    // Every file is written even if stdout failed (full, or closed by
+    // `| head`); that failure is the command's once they are.
+    let shown = l.out.show(&estimates);
+    l.out.write_files(&estimates)?;
     let n = estimates.len();
     for (k, e) in estimates.iter().enumerate() {
         if let Some(path) = &args.per_ic {
@@ -68,5 +71,5 @@ pub fn ftle(args: &FtleArgs) -> Result<(), CliError> {
             write_text(&nth(path, k, n), &hist.to_csv())?;
         }
     }
-    Ok(())
+    shown
 }

@@ -9,27 +9,41 @@ use spinball_analysis::run::{LyapunovEstimate, PartialRun, TrajectoryStats};
 
 use crate::documents::{PartialDocument, write_json};
 use crate::error::CliError;
+use crate::files::{check_replaceable, remove_regular};
 use crate::output::OutputArgs;
 use crate::run_args::RunArgs;
-use crate::watch::{Watch, deadline, progress_bar, stop_flag};
+use crate::stdout::print;
+use crate::watch::{
+    TimeLimit, Watch, deadline, parse_checkpoint_every, parse_time_limit, progress_bar, stop_flag,
+};
 
 /// Checkpoint and resumption options.
 #[derive(Debug, Clone, Args)]
 pub struct CheckpointArgs {
     /// Where finished trajectories are saved while the run goes (default:
-    /// the --json path with `.partial` appended).
+    /// the --json path with `.partial` appended); a regular file, a link to
+    /// one or a new path (it is replaced through a temporary file, and
+    /// removed once the result is written).
     #[arg(long)]
     pub checkpoint: Option<PathBuf>,
     /// Continue the run saved in the checkpoint instead of starting over.
     #[arg(long)]
     pub resume: bool,
     /// Stop (and save) after this many seconds, e.g. shortly before a
-    /// job's time limit.
-    #[arg(long, value_name = "SECONDS")]
-    pub time_limit: Option<f64>,
-    /// Save the checkpoint at most this often while running.
-    #[arg(long, value_name = "SECONDS", default_value_t = 60.0)]
-    pub checkpoint_every: f64,
+    /// job's time limit. Any number > 0; a limit beyond what the clock can
+    /// count (about 9.2e18 s, 292 billion years) or `inf` is no limit.
+    #[arg(long, value_name = "SECONDS", value_parser = parse_time_limit)]
+    pub time_limit: Option<TimeLimit>,
+    /// Save the checkpoint at most this often while running (0: after
+    /// every batch). Any number >= 0; above about 1.8e19 s, or `inf`, it is
+    /// saved only when the run stops.
+    #[arg(
+        long,
+        value_name = "SECONDS",
+        default_value = "60",
+        value_parser = parse_checkpoint_every
+    )]
+    pub checkpoint_every: Duration,
 }
 
 /// The arguments of `spinball lyapunov`.
@@ -69,12 +83,6 @@ pub fn run_ensembles(
             "--shard needs --json: the partial result goes there for `spinball merge`".into(),
         ));
     }
-    if !(ck.checkpoint_every.is_finite() && ck.checkpoint_every >= 0.0) {
-        return Err(CliError::Usage(format!(
-            "--checkpoint-every {}: must be a number of seconds >= 0",
-            ck.checkpoint_every
-        )));
-    }
     let checkpoint = ck.checkpoint.clone().or_else(|| {
         out.json.as_ref().map(|p| {
             let mut s = p.as_os_str().to_owned();
@@ -82,6 +90,12 @@ pub fn run_ensembles(
             PathBuf::from(s)
         })
     });
+    // Both are replaced through a temporary file: refuse a device, a FIFO
+    // or a directory before the run, not after it.
+    out.check()?;
+    if let Some(path) = &checkpoint {
+        check_replaceable("checkpoint", path)?;
+    }
     let mut doc = if ck.resume {
         let path = checkpoint.as_ref().ok_or_else(|| {
             CliError::Usage("--resume needs --checkpoint or --json (to find the checkpoint)".into())
@@ -99,10 +113,10 @@ pub fn run_ensembles(
     } else {
         PartialDocument::new(shard, total)
     };
-    let deadline = deadline(ck.time_limit)?;
+    let deadline = deadline(ck.time_limit);
     let stop = stop_flag();
     let bar = progress_bar(out.quiet);
-    let every = Duration::from_secs_f64(ck.checkpoint_every);
+    let every = ck.checkpoint_every;
     for (i, ensemble) in ensembles.iter().enumerate() {
         let resume = doc.points.get(i).cloned();
         let mut current = resume
@@ -153,12 +167,12 @@ pub fn run_ensembles(
         write_json(path, &doc)?;
         remove_checkpoint(checkpoint.as_deref(), path);
         if !out.quiet {
-            println!(
-                "shard {shard}: initial conditions {:?} of {:?} done; wrote {} (combine the shards with `spinball merge`)",
+            print(&format!(
+                "shard {shard}: initial conditions {:?} of {:?} done; wrote {} (combine the shards with `spinball merge`)\n",
                 shard.range(doc.total.clone()),
                 doc.total,
                 path.display()
-            );
+            ))?;
         }
         return Ok(Outcome::Shard);
     }
@@ -211,12 +225,13 @@ fn interrupted(why: CliError, doc: &PartialDocument, checkpoint: Option<PathBuf>
 }
 
 /// The checkpoint is not needed once the result is written (unless it is
-/// the result's own path).
+/// the result's own path); only a regular file (or a link to one) is
+/// removed.
 fn remove_checkpoint(checkpoint: Option<&std::path::Path>, result: &std::path::Path) {
     if let Some(c) = checkpoint
         && c != result
     {
-        let _ = std::fs::remove_file(c);
+        remove_regular(c);
     }
 }
 

@@ -37,6 +37,7 @@ fn kind(path: &Path) -> Result<String, CliError> {
 /// [`CliError::Usage`] for files that are not partial results of one run,
 /// or whose ranges overlap or leave indices out.
 pub fn merge(args: &MergeArgs) -> Result<(), CliError> {
+    args.out.check()?;
     let first_kind = kind(&args.parts[0])?;
     if first_kind == SPECTRUM_PARTIAL_KIND {
         let docs = args

@@ -12,6 +12,7 @@ use crate::documents::write_json;
 use crate::error::CliError;
 use crate::output::write_text;
 use crate::run_args::RunArgs;
+use crate::stdout::print;
 use crate::table_arg::read_table;
 
 /// The arguments of `spinball slurm`.
@@ -259,12 +260,11 @@ echo \"array job $array, merge job $merge\"
     }
     make_executable(&dir.join("submit.sh"))?;
     write_json(&dir.join("campaign.json"), &campaign)?;
-    println!(
-        "wrote {}/{{array.sbatch,merge.sbatch,submit.sh,campaign.json}}: {tasks} tasks; run {}/submit.sh",
+    print(&format!(
+        "wrote {}/{{array.sbatch,merge.sbatch,submit.sh,campaign.json}}: {tasks} tasks; run {}/submit.sh\n",
         dir.display(),
         dir.display()
-    );
-    Ok(())
+    ))
 }
 
 #[cfg(unix)]

@@ -14,6 +14,7 @@ use crate::documents::write_json;
 use crate::error::CliError;
 use crate::output::{OutputArgs, write_npy, write_text};
 use crate::run_args::RunArgs;
+use crate::stdout::print;
 
 /// The `kind` of a finished spectrum result.
 pub const SPECTRUM_KIND: &str = "spinball.spectrum";
@@ -57,19 +58,23 @@ impl SpectrumDocument {
     /// # Errors
     /// [`CliError::Failed`] for an output that cannot be written.
     pub fn write_results(&self, out: &OutputArgs) -> Result<(), CliError> {
-        if !out.quiet {
-            println!(
-                "{:>10}  {:>11} {:>11} {:>11} {:>11} {:>11}",
+        let shown = if out.quiet {
+            Ok(())
+        } else {
+            let mut table = format!(
+                "{:>10}  {:>11} {:>11} {:>11} {:>11} {:>11}\n",
                 "alpha", "l1", "l2", "l3", "l4", "l5"
             );
             for (a, p) in self.alphas.iter().zip(&self.points) {
                 let m = p.mean;
-                println!(
-                    "{a:>10}  {:>11.6} {:>11.6} {:>11.6} {:>11.6} {:>11.6}",
+                table.push_str(&format!(
+                    "{a:>10}  {:>11.6} {:>11.6} {:>11.6} {:>11.6} {:>11.6}\n",
                     m[0], m[1], m[2], m[3], m[4]
-                );
+                ));
             }
-        }
+            print(&table)
+        };
+        // The files are written even if stdout failed: they are the result.
         if let Some(path) = &out.json {
             write_json(path, self)?;
         }
@@ -90,7 +95,7 @@ impl SpectrumDocument {
                 .collect();
             write_npy(path, &[self.points.len() as u64, n, 5], &values)?;
         }
-        Ok(())
+        shown
     }
 
     /// Join the shards of one spectrum run into the whole result
@@ -174,6 +179,7 @@ pub fn spectrum(args: &SpectrumArgs) -> Result<(), CliError> {
             "--shard needs --json: the partial result goes there for `spinball merge`".into(),
         ));
     }
+    args.out.check()?;
     let mut options = SpectrumOptions::new(run.collisions, run.method());
     options.qr_interval = args.qr_interval;
     let mut points = Vec::new();
@@ -214,11 +220,11 @@ pub fn spectrum(args: &SpectrumArgs) -> Result<(), CliError> {
         let path = args.out.json.as_ref().expect("checked above");
         write_json(path, &doc)?;
         if !args.out.quiet {
-            println!(
-                "shard {}: wrote {} (combine the shards with `spinball merge`)",
+            print(&format!(
+                "shard {}: wrote {} (combine the shards with `spinball merge`)\n",
                 run.shard(),
                 path.display()
-            );
+            ))?;
         }
         return Ok(());
     }

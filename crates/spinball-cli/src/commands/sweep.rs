@@ -27,6 +27,7 @@
 //! while computing with code 1. Results are bitwise the same for any
 //! `--threads`.
 
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use clap::Args;
@@ -38,7 +39,9 @@ use spinball_core::{Sampler, SpinLaw, SpinLawError};
 use spinball_geometry::Table;
 
 use crate::error::CliError;
-use crate::output::write_text;
+
+use crate::files::{check_replaceable, write_atomic};
+use crate::stdout::print;
 
 /// Initial conditions each point's bias estimate is fitted on.
 const BIAS_ICS: u64 = 64;
@@ -125,10 +128,11 @@ impl SweepArgs {
     }
 }
 
-/// Write `doc` to `path`, pretty-printed.
+/// Write `doc` to `path`, pretty-printed, replacing it whole (a path that
+/// exists and is not a regular file is refused).
 fn write_document(path: &Path, doc: &SweepDocument) -> Result<(), CliError> {
     let text = serde_json::to_string_pretty(doc).map_err(CliError::failed)?;
-    write_text(path, &(text + "\n"))
+    write_atomic(path, (text + "\n").as_bytes())
 }
 
 /// Run `spinball sweep`.
@@ -141,30 +145,39 @@ pub fn sweep(args: &SweepArgs) -> Result<(), CliError> {
     let laws = args.laws()?;
     let mut doc = SweepDocument::new(&args.table, args.method, args.sampler, args.seed);
     // Fail on an unwritable path now, not after the computation.
+    check_replaceable("--json", &args.json)?;
     write_document(&args.json, &doc).map_err(|e| CliError::Usage(format!("--json: {e}")))?;
-    println!(
-        "{} | {} | sampler {} | seed {} | {} ICs x {} collisions",
+    // The rows on stdout; the document is written whatever becomes of
+    // them (a full or closed stdout is reported after the run).
+    let mut shown: Result<(), CliError> = Ok(());
+    let mut say = |text: String| {
+        if shown.is_ok() {
+            shown = print(&text);
+        }
+    };
+    say(format!(
+        "{} | {} | sampler {} | seed {} | {} ICs x {} collisions\n",
         args.table,
         args.method.name(),
         args.sampler,
         args.seed,
         args.ics,
         args.collisions
-    );
-    println!(
-        "{:>8} {:>10} {:>9} {:>10} {:>7} {:>9}",
+    ));
+    say(format!(
+        "{:>8} {:>10} {:>9} {:>10} {:>7} {:>9}\n",
         "alpha", "lambda", "SEM", "median", "f_ch", "time/s"
-    );
+    ));
     let mut budgets = Vec::new();
     for law in laws {
         let ensemble = args.ensemble(law);
         let est = ensemble
             .run()
             .map_err(|e| CliError::Failed(format!("alpha = {}: {e}", law.alpha())))?;
-        println!(
-            "{:>8} {:>10.5} {:>9.5} {:>10.5} {:>7.3} {:>9.2}",
+        say(format!(
+            "{:>8} {:>10.5} {:>9.5} {:>10.5} {:>7.3} {:>9.2}\n",
             est.alpha, est.mean, est.sem, est.median, est.chaotic_fraction, est.wall_time_s
-        );
+        ));
         // The budget needs a bias fit (at least 8 collisions); a point
         // without one is still written, with the reason on stderr.
         match ErrorBudget::for_estimate(&ensemble, &est, BIAS_ICS) {
@@ -174,7 +187,9 @@ pub fn sweep(args: &SweepArgs) -> Result<(), CliError> {
                 doc.push_with_budget(&est, row);
             }
             Err(e) => {
-                eprintln!(
+                // A warning: a full stderr must not stop the run.
+                let _ = writeln!(
+                    std::io::stderr(),
                     "spinball sweep: alpha = {}: no error budget: {e}",
                     law.alpha()
                 );
@@ -183,11 +198,13 @@ pub fn sweep(args: &SweepArgs) -> Result<(), CliError> {
         }
         write_document(&args.json, &doc)?;
     }
-    println!("\nerror budget (bias from the first {BIAS_ICS} ICs):");
-    println!("{}", BudgetRow::table_header());
+    say(format!(
+        "\nerror budget (bias from the first {BIAS_ICS} ICs):\n"
+    ));
+    let mut table = BudgetRow::table_header() + "\n";
     for line in budgets {
-        println!("{line}");
+        table += &(line + "\n");
     }
-    println!("wrote {}", args.json.display());
-    Ok(())
+    say(format!("{table}wrote {}\n", args.json.display()));
+    shown
 }

@@ -12,6 +12,8 @@ use spinball_plot::{Plot, TablePlot};
 
 use crate::documents::write_json;
 use crate::error::CliError;
+use crate::files::check_replaceable;
+use crate::stdout::print;
 use crate::table_arg::read_table;
 
 /// The arguments of `spinball table`.
@@ -20,10 +22,12 @@ pub struct TableArgs {
     /// The table: a built-in spec or a table file. Reading it validates it
     /// (exit code 2 with the reason if it is not a table).
     pub table: String,
-    /// Draw the table to this PNG.
+    /// Draw the table to this PNG (a regular file or a new path: it is
+    /// removed if drawing fails).
     #[arg(long)]
     pub png: Option<PathBuf>,
-    /// Write the description as JSON here.
+    /// Write the description as JSON here (a regular file, a link to one
+    /// or a new path: it is replaced through a temporary file).
     #[arg(long)]
     pub json: Option<PathBuf>,
     /// No description on stdout.
@@ -46,10 +50,17 @@ struct Description {
 /// `spinball table`.
 ///
 /// # Errors
-/// [`CliError::Usage`] for a table that cannot be read; [`CliError::Failed`]
-/// for an output that cannot be written.
+/// [`CliError::Usage`] for a table that cannot be read or an output path
+/// that is not a regular file; [`CliError::Failed`] for an output
+/// (stdout included) that cannot be written.
 pub fn table(args: &TableArgs) -> Result<(), CliError> {
     let table = read_table(&args.table)?;
+    if let Some(path) = &args.json {
+        check_replaceable("json", path)?;
+    }
+    if let Some(path) = &args.png {
+        check_replaceable("png", path)?;
+    }
     let shape = table.shape();
     let bb = table.aabb();
     let engine = Ensemble::new(table.clone(), SpinLaw::specular()).engine_used();
@@ -62,21 +73,30 @@ pub fn table(args: &TableArgs) -> Result<(), CliError> {
         bounding_box: [bb.min.x, bb.min.y, bb.max.x, bb.max.y],
         engine,
     };
-    if !args.quiet {
-        println!("table          {}", d.table);
-        println!("walls          {}", d.walls);
-        println!("area           {}", d.area);
-        println!("perimeter      {}", d.perimeter);
-        println!("curved length  {}", d.curved_length);
-        println!(
-            "bounding box   [{}, {}] x [{}, {}]",
-            d.bounding_box[0], d.bounding_box[2], d.bounding_box[1], d.bounding_box[3]
-        );
-        println!(
-            "engine         {} (what ensembles on it run)",
+    let shown = if args.quiet {
+        Ok(())
+    } else {
+        print(&format!(
+            "table          {}\n\
+             walls          {}\n\
+             area           {}\n\
+             perimeter      {}\n\
+             curved length  {}\n\
+             bounding box   [{}, {}] x [{}, {}]\n\
+             engine         {} (what ensembles on it run)\n",
+            d.table,
+            d.walls,
+            d.area,
+            d.perimeter,
+            d.curved_length,
+            d.bounding_box[0],
+            d.bounding_box[2],
+            d.bounding_box[1],
+            d.bounding_box[3],
             d.engine.name()
-        );
-    }
+        ))
+    };
+    // The files are written even if stdout failed.
     if let Some(path) = &args.json {
         write_json(path, &d)?;
     }
@@ -87,5 +107,5 @@ pub fn table(args: &TableArgs) -> Result<(), CliError> {
             .save_png(path, 800, 800)
             .map_err(CliError::failed)?;
     }
-    Ok(())
+    shown
 }

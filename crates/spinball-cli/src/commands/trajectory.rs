@@ -11,6 +11,7 @@ use spinball_geometry::DVec2;
 use crate::error::CliError;
 use crate::output::{write_npy, write_text};
 use crate::run_args::SamplerArg;
+use crate::stdout::print;
 use crate::table_arg::read_table;
 
 /// The arguments of `spinball trajectory`.
@@ -60,7 +61,8 @@ pub struct TrajectoryArgs {
 ///
 /// # Errors
 /// [`CliError::Usage`] for a bad table, α or start; [`CliError::Failed`]
-/// if a step fails.
+/// if a step fails or an output (stdout included) cannot be written;
+/// [`CliError::StdoutClosed`] if stdout's reader went away.
 pub fn trajectory(args: &TrajectoryArgs) -> Result<(), CliError> {
     let table = read_table(&args.table)?;
     let law = if args.extended {
@@ -111,7 +113,7 @@ pub fn trajectory(args: &TrajectoryArgs) -> Result<(), CliError> {
     }
     match &args.csv {
         Some(path) => write_text(path, &log.to_csv())?,
-        None if args.npy.is_none() => print!("{}", log.to_csv()),
+        None if args.npy.is_none() => print(&log.to_csv())?,
         None => {}
     }
     Ok(())
