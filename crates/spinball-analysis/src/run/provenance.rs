@@ -179,7 +179,7 @@ impl Provenance {
     ///
     /// let e = Ensemble::new(Stadium::new(1.0)?, SpinLaw::new(0.5)?);
     /// let d = e.provenance().difference(&e.clone().with_seed(8).provenance());
-    /// assert_eq!(d.unwrap_err().to_string(), "seed 1 in one, 8 in the other");
+    /// assert_eq!(d.unwrap_err().to_string(), "seed 0 in one, 8 in the other");
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     ///
