@@ -87,12 +87,18 @@ fn a_count_that_does_not_hold_and_a_missing_checksum_are_refused() {
         v["trajectories"].as_array_mut().unwrap().push(extra);
     })
     .unwrap_err();
-    assert!(e.contains("holds 7") && e.contains("says it holds 6"), "{e}");
+    assert!(
+        e.contains("holds 7") && e.contains("says it holds 6"),
+        "{e}"
+    );
     let e = edited(&part, |v| {
         v.as_object_mut().unwrap().remove("checksum");
     })
     .unwrap_err();
-    assert!(e.contains("no checksum") && e.contains("spinball 0.1.0"), "{e}");
+    assert!(
+        e.contains("no checksum") && e.contains("spinball 0.1.0"),
+        "{e}"
+    );
     let e = edited(&part, |v| v["checksum"] = "crc32:1234".into()).unwrap_err();
     assert!(e.contains("not a `fnv1a64:`"), "{e}");
     // A non-finite value cannot even be written (it would read back as
@@ -100,7 +106,10 @@ fn a_count_that_does_not_hold_and_a_missing_checksum_are_refused() {
     let mut bad = part.clone();
     bad.trajectories[2].exponent = f64::INFINITY;
     let e = serde_json::to_string(&bad).unwrap_err().to_string();
-    assert!(e.contains("initial condition 2") && e.contains("inf"), "{e}");
+    assert!(
+        e.contains("initial condition 2") && e.contains("inf"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -110,7 +119,9 @@ fn merge_and_resume_refuse_a_piece_that_does_not_hold() {
     let e = merge_partials(vec![a.clone(), b.clone()], Some(0..8)).unwrap_err();
     assert!(matches!(e, MergeError::Invalid { .. }), "{e}");
     assert!(e.to_string().contains("initial condition 5"), "{e}");
-    let e = ensemble(4..8).run_partial(Some(b), &mut Silent).unwrap_err();
+    let e = ensemble(4..8)
+        .run_partial(Some(b), &mut Silent)
+        .unwrap_err();
     assert!(e.to_string().contains("the checkpoint is refused"), "{e}");
     // Statistics that overflow are refused, never written as `null`.
     let mut huge = a.clone();
@@ -130,7 +141,10 @@ fn a_resume_of_another_run_says_which_field_differs() {
             .to_string();
         assert!(e.contains(want), "{want}: {e}");
     };
-    check(ensemble(0..6).with_seed(8), "seed 7 in the checkpoint, 8 asked");
+    check(
+        ensemble(0..6).with_seed(8),
+        "seed 7 in the checkpoint, 8 asked",
+    );
     check(
         Ensemble::new(stadium(), SpinLaw::new(0.25).unwrap())
             .with_seed(7)
@@ -158,9 +172,14 @@ fn a_resume_of_another_run_says_which_field_differs() {
         "table stadium:a=1 in the checkpoint, stadium:a=2 asked",
     );
     // Shards of different runs name the field too.
-    let other = ensemble(6..12).with_seed(9).run_partial(None, &mut Silent).unwrap();
+    let other = ensemble(6..12)
+        .with_seed(9)
+        .run_partial(None, &mut Silent)
+        .unwrap();
     let done = ensemble(0..6).run_partial(None, &mut Silent).unwrap();
-    let e = merge_partials(vec![done, other], None).unwrap_err().to_string();
+    let e = merge_partials(vec![done, other], None)
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("seed 7 in one, 9 in another"), "{e}");
 }
 
@@ -238,12 +257,15 @@ fn estimates_merge_by_geometry() {
         .run()
         .unwrap();
     assert_eq!(a.merge(&b).unwrap().n_ics, 8);
-    let c = Ensemble::new(Stadium::new(1.0f64.next_up()).unwrap(), SpinLaw::new(0.5).unwrap())
-        .with_seed(7)
-        .with_indices(4..8)
-        .with_collisions(300)
-        .run()
-        .unwrap();
+    let c = Ensemble::new(
+        Stadium::new(1.0f64.next_up()).unwrap(),
+        SpinLaw::new(0.5).unwrap(),
+    )
+    .with_seed(7)
+    .with_indices(4..8)
+    .with_collisions(300)
+    .run()
+    .unwrap();
     let e = a.merge(&c).unwrap_err().to_string();
     assert!(e.contains("table stadium:a=1 in one"), "{e}");
     // Overflowing statistics are an error, not `null` in a file.
@@ -257,7 +279,15 @@ fn estimates_merge_by_geometry() {
 fn spectra(indices: std::ops::Range<u64>) -> SpectrumEstimate {
     let billiard = Billiard::new(stadium(), SpinLaw::new(0.5).unwrap());
     let options = SpectrumOptions::new(200, Method::Tangent);
-    spectrum_ensemble(&billiard, Sampler::Paper, 3, indices, &options, Threads::Fixed(1)).unwrap()
+    spectrum_ensemble(
+        &billiard,
+        Sampler::Paper,
+        3,
+        indices,
+        &options,
+        Threads::Fixed(1),
+    )
+    .unwrap()
 }
 
 #[test]
@@ -295,7 +325,7 @@ fn an_edited_spectrum_is_refused() {
     assert!(e.contains("no checksum"), "{e}");
     // In memory: a spectrum appended is refused by the merge.
     let mut grown = est.clone();
-    grown.spectra.push(grown.spectra[0].clone());
+    grown.spectra.push(grown.spectra[0]);
     let e = grown.merge(&spectra(4..6)).unwrap_err().to_string();
     assert!(e.contains("holds 5"), "{e}");
     assert_eq!(est.merge(&spectra(4..6)).unwrap().n_ics, 6);
@@ -308,7 +338,9 @@ fn a_huge_histogram_is_a_typed_error() {
         assert!(e.contains("1..=1048576"), "{e}");
     }
     assert_eq!(
-        Histogram::new(0.0, 1.0, Histogram::MAX_BINS).unwrap().bins(),
+        Histogram::new(0.0, 1.0, Histogram::MAX_BINS)
+            .unwrap()
+            .bins(),
         Histogram::MAX_BINS
     );
     let est = ensemble(0..4).run().unwrap();

@@ -57,6 +57,9 @@ fn words(v: &[String]) -> Vec<&str> {
     v.iter().map(String::as_str).collect()
 }
 
+/// An edit of a result file.
+type Edit = dyn Fn(&mut Value);
+
 fn write(path: &Path, v: &Value) {
     std::fs::write(path, serde_json::to_string(v).unwrap()).unwrap();
 }
@@ -101,15 +104,21 @@ fn merge_refuses_an_edited_shard_naming_it() {
     let dir = scratch("merge");
     let [a, b] = shards(&dir);
     let merged = dir.join("merged.json");
-    expect(&["merge", "--quiet", "--json", s(&merged), s(&a), s(&b)], 0, &[]);
+    expect(
+        &["merge", "--quiet", "--json", s(&merged), s(&a), s(&b)],
+        0,
+        &[],
+    );
     let original = read(&b);
     let edited = dir.join("edited.json");
     // The tester's edits, and the count and checksum themselves.
-    let edits: [(&str, &dyn Fn(&mut Value), &str); 6] = [
+    let edits: [(&str, &Edit, &str); 6] = [
         (
             "times 10",
             &|v| {
-                let x = v["points"][0]["trajectories"][1]["exponent"].as_f64().unwrap();
+                let x = v["points"][0]["trajectories"][1]["exponent"]
+                    .as_f64()
+                    .unwrap();
                 v["points"][0]["trajectories"][1]["exponent"] = (x * 10.0).into();
             },
             "checksum does not hold",
@@ -128,7 +137,10 @@ fn merge_refuses_an_edited_shard_naming_it() {
             "appended",
             &|v| {
                 let t = v["points"][0]["trajectories"][3].clone();
-                v["points"][0]["trajectories"].as_array_mut().unwrap().push(t);
+                v["points"][0]["trajectories"]
+                    .as_array_mut()
+                    .unwrap()
+                    .push(t);
             },
             "holds 5",
         ),
@@ -189,7 +201,11 @@ fn resume_refuses_an_edited_checkpoint_and_names_what_differs() {
         ],
     );
     let args = resume(&["--alpha", "0.25"]);
-    expect(&words(&args), 2, &["alpha 0.5 in the checkpoint, 0.25 asked"]);
+    expect(
+        &words(&args),
+        2,
+        &["alpha 0.5 in the checkpoint, 0.25 asked"],
+    );
     let args = resume(&["--method", "fd"]);
     expect(
         &words(&args),
@@ -197,11 +213,17 @@ fn resume_refuses_an_edited_checkpoint_and_names_what_differs() {
         &["method tangent in the checkpoint, fd (delta0 1e-7) asked"],
     );
     // The tester's edit: one exponent + 100.
-    let x = v["points"][0]["trajectories"][0]["exponent"].as_f64().unwrap();
+    let x = v["points"][0]["trajectories"][0]["exponent"]
+        .as_f64()
+        .unwrap();
     v["points"][0]["trajectories"][0]["exponent"] = (x + 100.0).into();
     write(&checkpoint, &v);
     let args = resume(&[]);
-    expect(&words(&args), 2, &[s(&checkpoint), "checksum does not hold"]);
+    expect(
+        &words(&args),
+        2,
+        &[s(&checkpoint), "checksum does not hold"],
+    );
     assert!(!json.exists(), "nothing written from an edited checkpoint");
     // The unedited checkpoint resumes (nothing left: the shard is written).
     std::fs::copy(&a, &checkpoint).unwrap();
@@ -239,7 +261,14 @@ fn merge_refuses_an_edited_spectrum_shard() {
     });
     let merged = dir.join("merged.json");
     expect(
-        &["merge", "--quiet", "--json", s(&merged), s(&parts[0]), s(&parts[1])],
+        &[
+            "merge",
+            "--quiet",
+            "--json",
+            s(&merged),
+            s(&parts[0]),
+            s(&parts[1]),
+        ],
         0,
         &[],
     );
@@ -247,10 +276,17 @@ fn merge_refuses_an_edited_spectrum_shard() {
     // The tester's edit: one more spectrum appended to a shard.
     let mut v = read(&parts[1]);
     let extra = v["points"][0]["spectra"][0].clone();
-    v["points"][0]["spectra"].as_array_mut().unwrap().push(extra);
+    v["points"][0]["spectra"]
+        .as_array_mut()
+        .unwrap()
+        .push(extra);
     let edited = dir.join("edited.json");
     write(&edited, &v);
-    expect(&["merge", s(&parts[0]), s(&edited)], 2, &[s(&edited), "holds 5"]);
+    expect(
+        &["merge", s(&parts[0]), s(&edited)],
+        2,
+        &[s(&edited), "holds 5"],
+    );
     // ... with the counts edited to match.
     v["points"][0]["n_spectra"] = 5.into();
     v["points"][0]["n_ics"] = 5.into();

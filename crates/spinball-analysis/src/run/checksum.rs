@@ -317,7 +317,12 @@ mod tests {
     fn every_bit_counts() {
         let a = shape_fingerprint(&Shape::Stadium { a: 1.0 });
         assert_eq!(a, shape_fingerprint(&Shape::Stadium { a: 1.0 }));
-        assert_ne!(a, shape_fingerprint(&Shape::Stadium { a: 1.0f64.next_up() }));
+        assert_ne!(
+            a,
+            shape_fingerprint(&Shape::Stadium {
+                a: 1.0f64.next_up()
+            })
+        );
         assert_ne!(
             shape_fingerprint(&Shape::Circle { radius: 0.0 }),
             shape_fingerprint(&Shape::Circle { radius: -0.0 })

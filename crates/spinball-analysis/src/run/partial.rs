@@ -421,7 +421,9 @@ impl<B: Boundary + Sync> Ensemble<B> {
                 p.check().map_err(|e| {
                     AnalysisError::invalid("resume", format!("the checkpoint is refused: {e}"))
                 })?;
-                let another = |what: &str, first: &dyn std::fmt::Display, asked: &dyn std::fmt::Display| {
+                let another = |what: &str,
+                               first: &dyn std::fmt::Display,
+                               asked: &dyn std::fmt::Display| {
                     AnalysisError::invalid(
                         "resume",
                         format!(

@@ -130,7 +130,11 @@ impl SpectrumEstimate {
             finite(index, "sum of exponents", s.sum)?;
             finite(index, "time", s.time)?;
         }
-        let stats = self.mean.iter().chain(&self.sem).chain(&self.per_collision_mean);
+        let stats = self
+            .mean
+            .iter()
+            .chain(&self.sem)
+            .chain(&self.per_collision_mean);
         for &x in stats.chain([&self.sum_mean, &self.sum_max_abs]) {
             finite(self.first_index, "ensemble statistic", x)?;
         }

@@ -110,9 +110,20 @@ impl SpectrumDocument {
                 self.kind
             ));
         }
-        first.table.same_table(&self.table).map_err(|e| e.to_string())?;
-        if self.alphas.iter().map(|a| a.to_bits()).ne(first.alphas.iter().map(|a| a.to_bits())) {
-            return Err(format!("alpha {:?} in one, {:?} in the other", first.alphas, self.alphas));
+        first
+            .table
+            .same_table(&self.table)
+            .map_err(|e| e.to_string())?;
+        if self
+            .alphas
+            .iter()
+            .map(|a| a.to_bits())
+            .ne(first.alphas.iter().map(|a| a.to_bits()))
+        {
+            return Err(format!(
+                "alpha {:?} in one, {:?} in the other",
+                first.alphas, self.alphas
+            ));
         }
         if self.total != first.total {
             return Err(format!(

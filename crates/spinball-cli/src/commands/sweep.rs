@@ -115,9 +115,7 @@ impl SweepArgs {
 
     /// The ensemble of one point: the table, `law` and every other setting.
     fn ensemble(&self, law: SpinLaw) -> Ensemble {
-        let threads = self
-            .threads
-            .map_or(Threads::All, Threads::Fixed);
+        let threads = self.threads.map_or(Threads::All, Threads::Fixed);
         Ensemble::new(self.table, law)
             .with_sampler(self.sampler)
             .with_seed(self.seed)
