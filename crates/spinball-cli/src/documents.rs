@@ -71,9 +71,11 @@ impl PartialDocument {
     pub fn read(path: &Path) -> Result<Self, CliError> {
         let text = fs::read_to_string(path)
             .map_err(|e| CliError::Usage(format!("cannot read {}: {e}", path.display())))?;
+        // An edited or damaged file (checksum, count, a non-finite value)
+        // is refused here, naming it.
         let doc: PartialDocument = serde_json::from_str(&text).map_err(|e| {
             CliError::Usage(format!(
-                "{} is not a spinball partial result: {e}",
+                "{} is not a valid spinball partial result: {e}",
                 path.display()
             ))
         })?;

@@ -37,6 +37,22 @@ pub enum SamplerArg {
     Microcanonical,
 }
 
+/// Parse `--threads`: a whole number in `1..=`[`Threads::MAX`], checked
+/// before any thread is made.
+///
+/// # Errors
+/// The range that works, for anything else.
+pub fn parse_threads(s: &str) -> Result<usize, String> {
+    let range = format!(
+        "the thread count must be a whole number in 1..={} (results do not depend on it; leave --threads out to use all cores)",
+        Threads::MAX
+    );
+    match s.trim().parse::<usize>() {
+        Ok(n) if (1..=Threads::MAX).contains(&n) => Ok(n),
+        _ => Err(range),
+    }
+}
+
 /// What to run and how.
 #[derive(Debug, Clone, Args)]
 pub struct RunArgs {
@@ -81,8 +97,9 @@ pub struct RunArgs {
     /// Engine.
     #[arg(long, value_enum, default_value_t = EngineArg::Lanes)]
     pub engine: EngineArg,
-    /// Worker threads (default: all cores); results do not depend on it.
-    #[arg(long)]
+    /// Worker threads, 1..=1024 (default: all cores); results do not
+    /// depend on it.
+    #[arg(long, value_name = "T", value_parser = parse_threads)]
     pub threads: Option<usize>,
     /// Run only shard K of N (0-based, `K/N`): a contiguous block of the
     /// initial conditions; the output is a partial result for `spinball merge`.

@@ -231,7 +231,8 @@ impl FtleDistribution {
     /// `bins` bins.
     ///
     /// # Errors
-    /// [`AnalysisError::InvalidOption`] for `bins == 0`.
+    /// [`AnalysisError::InvalidOption`] unless `1 <= bins <=`
+    /// [`Histogram::MAX_BINS`].
     pub fn auto_histogram(&self, bins: usize) -> Result<Histogram, AnalysisError> {
         let (lo, hi) = (self.min(), self.max());
         let span = if hi > lo {

@@ -30,10 +30,16 @@ pub struct Histogram {
 }
 
 impl Histogram {
+    /// The most bins a histogram may have: 2²⁰ = 1 048 576 (8 MiB of
+    /// counts), far more than any sample of initial conditions fills. More
+    /// is refused with a typed error, never an allocation failure.
+    pub const MAX_BINS: usize = 1 << 20;
+
     /// `bins` equal bins over `[lo, hi)`.
     ///
     /// # Errors
-    /// [`AnalysisError::InvalidOption`] unless `lo < hi` are finite and `bins > 0`.
+    /// [`AnalysisError::InvalidOption`] unless `lo < hi` are finite and
+    /// `1 <= bins <= `[`Histogram::MAX_BINS`].
     pub fn new(lo: f64, hi: f64, bins: usize) -> Result<Self, AnalysisError> {
         if !(lo.is_finite() && hi.is_finite() && lo < hi) {
             return Err(AnalysisError::invalid(
@@ -41,8 +47,11 @@ impl Histogram {
                 format!("need finite lo < hi, got [{lo}, {hi})"),
             ));
         }
-        if bins == 0 {
-            return Err(AnalysisError::invalid("histogram bins", "must be > 0"));
+        if bins == 0 || bins > Self::MAX_BINS {
+            return Err(AnalysisError::invalid(
+                "histogram bins",
+                format!("{bins}: must be in 1..={}", Self::MAX_BINS),
+            ));
         }
         Ok(Histogram {
             lo,

@@ -169,6 +169,24 @@
 //! have given, **bitwise** (every statistic is recomputed from the
 //! per-trajectory values in index order), and refuses pieces that do not fit.
 //!
+//! # Checksums
+//!
+//! Every file a run writes to be read back — a [`PartialRun`] (a shard's
+//! share, a checkpoint) and a [`SpectrumEstimate`] — carries the count of
+//! its per-initial-condition values and a checksum of its whole content:
+//! FNV-1a (64 bits) over a canonical byte encoding (integers and the bits
+//! of floats as 8 bytes little-endian, strings as length and bytes, enum
+//! variants as a tag byte), written as `fnv1a64:` and 16 hex digits. The
+//! algorithm and encoding are spelled out in this crate, so the checksum is
+//! the same on every platform and build. Reading a file back checks the
+//! count, the checksum and that every value is finite, and refuses the file
+//! with an [`IntegrityError`] otherwise: an edited file is never merged or
+//! resumed. A file without a checksum (written before they were added) is
+//! refused too, with the version that wrote it.
+//!
+//! The same encoding identifies a table ([`TableRecord::identity`]): its
+//! kind and the exact bits of its parameters, never a Rust type name.
+//!
 //! # λ(α) sweeps
 //!
 //! λ(α): one [`Ensemble`] per spin parameter, with progress as it goes, and
@@ -229,6 +247,7 @@
 //! documented on [`lyapunov_spectrum`](crate::estimators::lyapunov_spectrum).
 
 mod alpha_sweep;
+mod checksum;
 mod driver;
 mod engine;
 mod ensemble;
@@ -243,12 +262,13 @@ mod stop_rule;
 mod trajectory;
 
 pub use alpha_sweep::{AlphaSweep, SweepEvent, linspace};
+pub use checksum::IntegrityError;
 pub use driver::{BatchProgress, Control, RunEvent, RunObserver, Silent};
 pub use engine::Engine;
 pub use ensemble::Ensemble;
 pub use parallel::{Threads, map_chunks, map_indices};
 pub use partial::{MergeError, PartialRun, merge_partials};
-pub use provenance::{Provenance, TableRecord};
+pub use provenance::{Provenance, RunDifference, TableRecord};
 pub use result::{LyapunovEstimate, StopReason};
 pub use shard::Shard;
 pub use spectrum_ensemble::{SpectrumEstimate, spectrum_ensemble};

@@ -18,15 +18,28 @@ pub enum Threads {
 }
 
 impl Threads {
+    /// The most threads `Fixed(n)` may ask for: 1024. Results do not depend
+    /// on the thread count, and more threads than cores only cost memory
+    /// and scheduling; a huge count would spawn that many threads (each
+    /// with its stack) before any work, so it is refused instead.
+    pub const MAX: usize = 1024;
+
     /// Check the setting.
     ///
     /// # Errors
-    /// [`AnalysisError::InvalidOption`] for `Fixed(0)`.
+    /// [`AnalysisError::InvalidOption`] unless `Fixed(n)` has
+    /// `1 <= n <= `[`Threads::MAX`].
     pub fn validate(&self) -> Result<(), AnalysisError> {
-        if *self == Threads::Fixed(0) {
-            return Err(AnalysisError::invalid("threads", "must be at least 1"));
+        match *self {
+            Threads::Fixed(n) if n == 0 || n > Self::MAX => Err(AnalysisError::invalid(
+                "threads",
+                format!(
+                    "{n}: must be in 1..={} (results do not depend on it; all cores: Threads::All)",
+                    Self::MAX
+                ),
+            )),
+            _ => Ok(()),
         }
-        Ok(())
     }
 
     /// Number of threads this setting means on this machine.
@@ -58,7 +71,9 @@ impl Threads {
 ///
 /// # Errors
 /// The error `f` returns for the lowest failing index, or
-/// [`AnalysisError::InvalidOption`] if a thread pool cannot be built.
+/// [`AnalysisError::InvalidOption`] for a thread count
+/// [`Threads::validate`] refuses (checked before any thread is made) or a
+/// thread pool that cannot be built.
 pub fn map_indices<T, F>(
     indices: Range<u64>,
     threads: Threads,
@@ -68,6 +83,7 @@ where
     T: Send,
     F: Fn(u64) -> Result<T, AnalysisError> + Sync + Send,
 {
+    threads.validate()?;
     #[cfg(feature = "rayon")]
     {
         use rayon::prelude::*;
@@ -182,6 +198,19 @@ mod tests {
             let squares = map_indices(0..100, Threads::Fixed(3), |i| Ok(i * i)).unwrap();
             assert_eq!(squares, (0..100).map(|i| i * i).collect::<Vec<u64>>());
         }
+    }
+
+    #[test]
+    fn a_huge_thread_count_is_refused_before_any_thread_is_made() {
+        for n in [0, Threads::MAX + 1, 100_000, usize::MAX] {
+            let err = map_indices(0..10, Threads::Fixed(n), Ok).unwrap_err();
+            assert!(
+                err.to_string().contains(&format!("1..={}", Threads::MAX)),
+                "{err}"
+            );
+            assert!(Threads::Fixed(n).validate().is_err());
+        }
+        assert!(Threads::Fixed(Threads::MAX).validate().is_ok());
     }
 
     #[test]

@@ -9,16 +9,25 @@ use std::{ops::Range, time::Instant};
 use spinball_geometry::Boundary;
 use thiserror::Error;
 
+use super::checksum::{Fnv1a, IntegrityError, finite};
 use super::driver::{Point, RunObserver};
 use super::ensemble::Ensemble;
-use super::provenance::Provenance;
+use super::provenance::{Provenance, RunDifference};
 use super::result::{LyapunovEstimate, StopReason};
 use super::trajectory::TrajectoryStats;
 use crate::error::AnalysisError;
 
 /// A run over an index range, possibly unfinished.
+///
+/// As JSON (feature `serde`) it carries, besides its fields,
+/// `n_trajectories` (the count of per-IC values) and `checksum`
+/// (`fnv1a64:` and 16 hex digits: FNV-1a over the exact bits of the
+/// provenance, range, wall time, version, count and every per-IC value).
+/// Reading one back checks both and that every value is finite
+/// ([`IntegrityError`]), so an edited or damaged file is refused, never
+/// merged or resumed; writing one with a non-finite value fails (it would
+/// read back as `null`).
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PartialRun {
     /// The run's parameters.
     pub provenance: Provenance,
@@ -43,6 +52,45 @@ impl PartialRun {
             wall_time_s: 0.0,
             version: env!("CARGO_PKG_VERSION").to_string(),
         }
+    }
+
+    /// Check that the run holds together: its trajectories are the
+    /// consecutive indices from the start of its range, within it, each
+    /// with a finite exponent, per-collision exponent and time. A run made
+    /// by [`Ensemble::run_partial`] always does; [`merge_partials`] and a
+    /// resume refuse one that does not.
+    ///
+    /// # Errors
+    /// [`IntegrityError::Indices`] or [`IntegrityError::NonFinite`].
+    pub fn check(&self) -> Result<(), IntegrityError> {
+        for (expected, t) in (self.indices.start..).zip(&self.trajectories) {
+            if t.index != expected || expected >= self.indices.end {
+                return Err(IntegrityError::Indices {
+                    range: self.indices.clone(),
+                    expected,
+                    found: t.index,
+                });
+            }
+            finite(t.index, "exponent", t.exponent)?;
+            finite(t.index, "per-collision exponent", t.per_collision)?;
+            finite(t.index, "time", t.time)?;
+        }
+        Ok(())
+    }
+
+    /// The checksum of the content (written and checked with the JSON).
+    fn checksum(&self) -> Fnv1a {
+        let mut h = Fnv1a::new("spinball.partial_run");
+        h.provenance(&self.provenance);
+        h.u64(self.indices.start);
+        h.u64(self.indices.end);
+        h.f64(self.wall_time_s);
+        h.str(&self.version);
+        h.u64(self.trajectories.len() as u64);
+        for t in &self.trajectories {
+            h.trajectory(t);
+        }
+        h
     }
 
     /// The indices finished.
@@ -106,6 +154,87 @@ impl PartialRun {
     }
 }
 
+#[cfg(feature = "serde")]
+mod file {
+    use std::ops::Range;
+
+    use serde::{Deserialize, Deserializer, Serialize, Serializer, de, ser};
+
+    use super::{IntegrityError, PartialRun, Provenance, TrajectoryStats};
+    use crate::run::checksum::verify;
+
+    /// A partial run as written: its fields, the count and the checksum.
+    #[derive(Serialize)]
+    struct Written<'a> {
+        provenance: &'a Provenance,
+        indices: &'a Range<u64>,
+        trajectories: &'a [TrajectoryStats],
+        wall_time_s: f64,
+        version: &'a str,
+        n_trajectories: u64,
+        checksum: String,
+    }
+
+    /// A partial run as read, before its checks.
+    #[derive(Deserialize)]
+    struct Read {
+        provenance: Provenance,
+        indices: Range<u64>,
+        trajectories: Vec<TrajectoryStats>,
+        wall_time_s: f64,
+        version: String,
+        #[serde(default)]
+        n_trajectories: Option<u64>,
+        #[serde(default)]
+        checksum: Option<String>,
+    }
+
+    impl Serialize for PartialRun {
+        fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+            self.check().map_err(ser::Error::custom)?;
+            Written {
+                provenance: &self.provenance,
+                indices: &self.indices,
+                trajectories: &self.trajectories,
+                wall_time_s: self.wall_time_s,
+                version: &self.version,
+                n_trajectories: self.trajectories.len() as u64,
+                checksum: self.checksum().text(),
+            }
+            .serialize(s)
+        }
+    }
+
+    impl<'de> Deserialize<'de> for PartialRun {
+        fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+            let r = Read::deserialize(d)?;
+            let stated = match (r.n_trajectories, &r.checksum) {
+                (Some(n), Some(_)) => n,
+                _ => {
+                    return Err(de::Error::custom(IntegrityError::NoChecksum {
+                        version: r.version,
+                    }));
+                }
+            };
+            let run = PartialRun {
+                provenance: r.provenance,
+                indices: r.indices,
+                trajectories: r.trajectories,
+                wall_time_s: r.wall_time_s,
+                version: r.version,
+            };
+            let found = run.trajectories.len() as u64;
+            if stated != found {
+                return Err(de::Error::custom(IntegrityError::Count { stated, found }));
+            }
+            verify(r.checksum.as_deref(), &run.checksum(), &run.version)
+                .and_then(|()| run.check())
+                .map_err(de::Error::custom)?;
+            Ok(run)
+        }
+    }
+}
+
 /// Why partial runs could not be merged.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
@@ -115,7 +244,7 @@ pub enum MergeError {
     Empty,
     /// Two pieces come from different runs.
     #[error(
-        "the partial results are of different runs: {what} differ ({first} vs {other}); merge only the shards of one command"
+        "the partial results are of different runs: {what} {first} in one, {other} in another; merge only the shards of one command"
     )]
     DifferentRuns {
         /// The parameter that differs.
@@ -151,6 +280,18 @@ pub enum MergeError {
         /// What it finished.
         done: Range<u64>,
     },
+    /// The table has no shape, so nothing shows the pieces are of one
+    /// table ([`RunDifference::NoShape`]).
+    #[error(transparent)]
+    Table(RunDifference),
+    /// A piece does not hold together ([`PartialRun::check`]).
+    #[error("the partial result over {indices:?} is refused: {source}")]
+    Invalid {
+        /// Its range.
+        indices: Range<u64>,
+        /// What does not hold.
+        source: IntegrityError,
+    },
     /// The merged trajectories do not make an estimate.
     #[error(transparent)]
     Estimate(#[from] AnalysisError),
@@ -164,29 +305,31 @@ pub enum MergeError {
 ///
 /// # Errors
 /// [`MergeError`]: pieces of different runs or versions, overlapping or
-/// missing indices, an unfinished piece.
+/// missing indices, an unfinished piece, a piece that does not hold
+/// together ([`PartialRun::check`]), a table without a shape.
 pub fn merge_partials(
     mut parts: Vec<PartialRun>,
     expected: Option<Range<u64>>,
 ) -> Result<LyapunovEstimate, MergeError> {
     let first = parts.first().ok_or(MergeError::Empty)?.clone();
-    for p in &parts[1..] {
-        let differ = |what: &'static str, a: String, b: String| {
-            Err(MergeError::DifferentRuns {
-                what,
-                first: a,
-                other: b,
-            })
-        };
-        if p.provenance != first.provenance {
-            return differ(
-                "parameters",
-                format!("{:?}", first.provenance),
-                format!("{:?}", p.provenance),
-            );
+    for p in &parts {
+        p.check().map_err(|source| MergeError::Invalid {
+            indices: p.indices.clone(),
+            source,
+        })?;
+        match first.provenance.difference(&p.provenance) {
+            Ok(()) => {}
+            Err(RunDifference::Field { what, first, other }) => {
+                return Err(MergeError::DifferentRuns { what, first, other });
+            }
+            Err(e) => return Err(MergeError::Table(e)),
         }
         if p.version != first.version {
-            return differ("versions", first.version.clone(), p.version.clone());
+            return Err(MergeError::DifferentRuns {
+                what: "version",
+                first: first.version.clone(),
+                other: p.version.clone(),
+            });
         }
     }
     parts.sort_by_key(|p| (p.indices.start, p.indices.end));
@@ -262,7 +405,10 @@ impl<B: Boundary + Sync> Ensemble<B> {
     ///
     /// # Errors
     /// [`AnalysisError::InvalidOption`] if `resume` is of another run or
-    /// range; [`Ensemble::validate`]; the first trajectory error.
+    /// range (the message names the first field that differs: `seed 7 in
+    /// the checkpoint, 8 asked`), of a table without a shape, or does not
+    /// hold together ([`PartialRun::check`]); [`Ensemble::validate`]; the
+    /// first trajectory error.
     pub fn run_partial<O: RunObserver + ?Sized>(
         &self,
         resume: Option<PartialRun>,
@@ -272,14 +418,37 @@ impl<B: Boundary + Sync> Ensemble<B> {
         let part = match resume {
             None => PartialRun::new(provenance, self.indices.clone()),
             Some(p) => {
-                if p.provenance != provenance || p.indices != self.indices {
-                    return Err(AnalysisError::invalid(
+                p.check().map_err(|e| {
+                    AnalysisError::invalid("resume", format!("the checkpoint is refused: {e}"))
+                })?;
+                let another = |what: &str,
+                               first: &dyn std::fmt::Display,
+                               asked: &dyn std::fmt::Display| {
+                    AnalysisError::invalid(
                         "resume",
                         format!(
-                            "the checkpoint is of another run ({} over {:?}, not {} over {:?}); \
-                             resume with the command that wrote it",
-                            p.provenance.table, p.indices, provenance.table, self.indices
+                            "the checkpoint is of another run: {what} {first} in the checkpoint, \
+                             {asked} asked; resume with the command that wrote it"
                         ),
+                    )
+                };
+                match p.provenance.difference(&provenance) {
+                    Ok(()) => {}
+                    Err(RunDifference::Field { what, first, other }) => {
+                        return Err(another(what, &first, &other));
+                    }
+                    Err(e) => {
+                        return Err(AnalysisError::invalid(
+                            "resume",
+                            format!("cannot resume: {e}"),
+                        ));
+                    }
+                }
+                if p.indices != self.indices {
+                    return Err(another(
+                        "initial conditions",
+                        &format_args!("{:?}", p.indices),
+                        &format_args!("{:?}", self.indices),
                     ));
                 }
                 p

@@ -216,6 +216,23 @@ impl LyapunovEstimate {
         self.collision_rate = total_collisions as f64 / total_time;
         self.n_ics = t.len() as u64;
         self.first_index = t[0].index;
+        // Finite values can still overflow a statistic (an exponent near
+        // 1e308): refuse it rather than write it as JSON `null`.
+        let stats = [
+            ("mean", self.mean),
+            ("sem", self.sem),
+            ("std", self.std),
+            ("per-collision mean", self.per_collision_mean),
+            ("total time", self.total_time),
+        ];
+        if let Some((what, x)) = stats.into_iter().find(|(_, x)| !x.is_finite()) {
+            return Err(AnalysisError::invalid(
+                "trajectories",
+                format!(
+                    "the {what} of the per-trajectory values is {x}: they are not those of a run (no trajectory gives an exponent near 1e308)"
+                ),
+            ));
+        }
         Ok(())
     }
 
@@ -237,9 +254,10 @@ impl LyapunovEstimate {
                 format!("cannot merge estimates with different {what}: {a:?} vs {b:?}"),
             ))
         };
-        if self.table != other.table {
-            return mismatch("tables", &self.table, &other.table);
-        }
+        // The table by its geometry, bit for bit (never a type name).
+        self.table
+            .same_table(&other.table)
+            .map_err(|e| AnalysisError::invalid("merge", format!("cannot merge estimates: {e}")))?;
         if self.alpha.to_bits() != other.alpha.to_bits() {
             return mismatch("alpha", &self.alpha, &other.alpha);
         }

@@ -9,6 +9,7 @@ use spinball_core::{Billiard, Sampler, ic_rng};
 use spinball_geometry::Boundary;
 use spinball_lanes::{CHUNK, LaneBilliard, LanesError};
 
+use super::checksum::{Fnv1a, IntegrityError, finite};
 use super::parallel::{Threads, map_chunks, map_indices};
 use super::result::in_order;
 use crate::error::AnalysisError;
@@ -18,8 +19,15 @@ use crate::estimators::{
 
 /// The spectrum of an ensemble: mean and standard error of each ordered
 /// exponent over initial conditions, and every trajectory's spectrum.
+///
+/// As JSON (feature `serde`) it carries, besides its fields, `n_spectra`
+/// (the count of per-IC spectra: `n_ics`, or 0 for a record
+/// [without spectra](SpectrumEstimate::without_spectra)) and `checksum`
+/// (FNV-1a over the exact bits of every field and every spectrum, see the
+/// group docs, "Checksums"). Reading one back checks both, and that every
+/// value is finite ([`IntegrityError`]); writing one with a non-finite
+/// value fails.
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SpectrumEstimate {
     /// Mean of each exponent (per unit time, descending order within each
     /// trajectory) over the initial conditions.
@@ -102,15 +110,85 @@ impl SpectrumEstimate {
         })
     }
 
+    /// Check that the estimate holds together: its spectra (if kept) are
+    /// `n_ics` of them, and every statistic and per-IC value is finite.
+    ///
+    /// # Errors
+    /// [`IntegrityError::Count`] or [`IntegrityError::NonFinite`].
+    pub fn check(&self) -> Result<(), IntegrityError> {
+        let found = self.spectra.len() as u64;
+        if found != 0 && found != self.n_ics {
+            return Err(IntegrityError::Count {
+                stated: self.n_ics,
+                found,
+            });
+        }
+        for (index, s) in (self.first_index..).zip(&self.spectra) {
+            for &x in s.exponents.iter().chain(&s.per_collision) {
+                finite(index, "spectrum", x)?;
+            }
+            finite(index, "sum of exponents", s.sum)?;
+            finite(index, "time", s.time)?;
+        }
+        let stats = self
+            .mean
+            .iter()
+            .chain(&self.sem)
+            .chain(&self.per_collision_mean);
+        for &x in stats.chain([&self.sum_mean, &self.sum_max_abs]) {
+            finite(self.first_index, "ensemble statistic", x)?;
+        }
+        Ok(())
+    }
+
+    /// The checksum of the content (written and checked with the JSON).
+    fn checksum(&self) -> Fnv1a {
+        let mut h = Fnv1a::new("spinball.spectrum_estimate");
+        h.f64s(&self.mean);
+        h.f64s(&self.sem);
+        h.f64s(&self.per_collision_mean);
+        h.f64s(&[self.sum_mean, self.sum_max_abs]);
+        h.u64(self.floored);
+        h.u64(self.n_ics);
+        h.u64(self.first_index);
+        h.spectrum_options(&self.options);
+        h.sampler(Some(self.sampler));
+        h.u64(self.seed);
+        h.f64(self.wall_time_s);
+        h.u64(self.spectra.len() as u64);
+        for s in &self.spectra {
+            h.spectrum(s);
+        }
+        h
+    }
+
     /// Combine the spectra of two adjacent index ranges (in either order)
     /// into the estimate over both: the statistics are recomputed from the
     /// per-trajectory spectra in index order, so they are **bitwise** those
     /// of one run over the joined range; `wall_time_s` is the sum.
     ///
     /// # Errors
-    /// [`AnalysisError::InvalidOption`] if the ranges are not adjacent or
-    /// the options, sampler or seed differ.
+    /// [`AnalysisError::InvalidOption`] if the ranges are not adjacent,
+    /// the options, sampler or seed differ, or either does not hold
+    /// together ([`SpectrumEstimate::check`]) or has no spectra.
     pub fn merge(&self, other: &SpectrumEstimate) -> Result<SpectrumEstimate, AnalysisError> {
+        for e in [self, other] {
+            e.check().map_err(|err| {
+                AnalysisError::invalid(
+                    "merge",
+                    format!(
+                        "the spectrum estimate over {:?} is refused: {err}",
+                        e.first_index..e.first_index.saturating_add(e.n_ics)
+                    ),
+                )
+            })?;
+            if e.spectra.is_empty() {
+                return Err(AnalysisError::invalid(
+                    "merge",
+                    "an estimate without its spectra cannot be merged (the statistics are recomputed from them)",
+                ));
+            }
+        }
         if self.options != other.options || self.sampler != other.sampler || self.seed != other.seed
         {
             return Err(AnalysisError::invalid(
@@ -184,6 +262,115 @@ impl SpectrumEstimate {
         SpectrumEstimate {
             spectra: Vec::new(),
             ..self.clone()
+        }
+    }
+}
+
+#[cfg(feature = "serde")]
+mod file {
+    use serde::{Deserialize, Deserializer, Serialize, Serializer, de, ser};
+
+    use super::{IntegrityError, Sampler, Spectrum, SpectrumEstimate, SpectrumOptions};
+    use crate::run::checksum::verify;
+
+    /// A spectrum estimate as written: its fields, the count and the
+    /// checksum.
+    #[derive(Serialize)]
+    struct Written<'a> {
+        mean: &'a [f64; 5],
+        sem: &'a [f64; 5],
+        per_collision_mean: &'a [f64; 5],
+        sum_mean: f64,
+        sum_max_abs: f64,
+        floored: u64,
+        n_ics: u64,
+        first_index: u64,
+        options: &'a SpectrumOptions,
+        sampler: &'a Sampler,
+        seed: u64,
+        wall_time_s: f64,
+        spectra: &'a [Spectrum],
+        n_spectra: u64,
+        checksum: String,
+    }
+
+    /// A spectrum estimate as read, before its checks.
+    #[derive(Deserialize)]
+    struct Read {
+        mean: [f64; 5],
+        sem: [f64; 5],
+        per_collision_mean: [f64; 5],
+        sum_mean: f64,
+        sum_max_abs: f64,
+        floored: u64,
+        n_ics: u64,
+        first_index: u64,
+        options: SpectrumOptions,
+        sampler: Sampler,
+        seed: u64,
+        wall_time_s: f64,
+        spectra: Vec<Spectrum>,
+        #[serde(default)]
+        n_spectra: Option<u64>,
+        #[serde(default)]
+        checksum: Option<String>,
+    }
+
+    impl Serialize for SpectrumEstimate {
+        fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+            self.check().map_err(ser::Error::custom)?;
+            Written {
+                mean: &self.mean,
+                sem: &self.sem,
+                per_collision_mean: &self.per_collision_mean,
+                sum_mean: self.sum_mean,
+                sum_max_abs: self.sum_max_abs,
+                floored: self.floored,
+                n_ics: self.n_ics,
+                first_index: self.first_index,
+                options: &self.options,
+                sampler: &self.sampler,
+                seed: self.seed,
+                wall_time_s: self.wall_time_s,
+                spectra: &self.spectra,
+                n_spectra: self.spectra.len() as u64,
+                checksum: self.checksum().text(),
+            }
+            .serialize(s)
+        }
+    }
+
+    impl<'de> Deserialize<'de> for SpectrumEstimate {
+        fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+            let r = Read::deserialize(d)?;
+            let (Some(stated), Some(checksum)) = (r.n_spectra, r.checksum) else {
+                return Err(de::Error::custom(IntegrityError::NoChecksum {
+                    version: "0.1.0".into(),
+                }));
+            };
+            let e = SpectrumEstimate {
+                mean: r.mean,
+                sem: r.sem,
+                per_collision_mean: r.per_collision_mean,
+                sum_mean: r.sum_mean,
+                sum_max_abs: r.sum_max_abs,
+                floored: r.floored,
+                n_ics: r.n_ics,
+                first_index: r.first_index,
+                options: r.options,
+                sampler: r.sampler,
+                seed: r.seed,
+                wall_time_s: r.wall_time_s,
+                spectra: r.spectra,
+            };
+            let found = e.spectra.len() as u64;
+            if stated != found {
+                return Err(de::Error::custom(IntegrityError::Count { stated, found }));
+            }
+            verify(Some(&checksum), &e.checksum(), "0.1.0")
+                .and_then(|()| e.check())
+                .map_err(de::Error::custom)?;
+            Ok(e)
         }
     }
 }

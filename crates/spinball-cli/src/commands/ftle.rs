@@ -4,6 +4,7 @@
 use std::path::PathBuf;
 
 use clap::Args;
+use spinball_analysis::estimators::Histogram;
 use spinball_analysis::run::trajectories_csv;
 
 use crate::commands::lyapunov::{LyapunovArgs, Outcome, run_ensembles};
@@ -23,9 +24,24 @@ pub struct FtleArgs {
     /// Write the histogram of the exponents as CSV (`lo,hi,count,density`).
     #[arg(long)]
     pub histogram: Option<PathBuf>,
-    /// Bins of the histogram (over the range of the exponents).
-    #[arg(long, default_value_t = 60)]
+    /// Bins of the histogram (over the range of the exponents), 1..=1048576.
+    #[arg(long, default_value_t = 60, value_parser = parse_bins)]
     pub bins: usize,
+}
+
+/// Parse `--bins`: a whole number in `1..=`[`Histogram::MAX_BINS`],
+/// checked before the run.
+///
+/// # Errors
+/// The range that works, for anything else.
+pub fn parse_bins(s: &str) -> Result<usize, String> {
+    match s.trim().parse::<usize>() {
+        Ok(n) if (1..=Histogram::MAX_BINS).contains(&n) => Ok(n),
+        _ => Err(format!(
+            "the histogram's bins must be a whole number in 1..={}",
+            Histogram::MAX_BINS
+        )),
+    }
 }
 
 /// `path` for point `k` of `n`: itself if there is one point.

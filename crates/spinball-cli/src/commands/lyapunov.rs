@@ -1,11 +1,16 @@
 //! `spinball lyapunov`: λ at one α or a list, over the whole ensemble or
 //! one shard, with checkpoints and resumption.
 
-use std::path::PathBuf;
+use std::fmt::Display;
+use std::ops::Range;
+use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use clap::Args;
-use spinball_analysis::run::{LyapunovEstimate, PartialRun, TrajectoryStats};
+use spinball_analysis::run::{
+    Ensemble, LyapunovEstimate, PartialRun, RunDifference, Shard, TrajectoryStats,
+};
+use spinball_geometry::Built;
 
 use crate::documents::{PartialDocument, write_json};
 use crate::error::CliError;
@@ -101,14 +106,7 @@ pub fn run_ensembles(
             CliError::Usage("--resume needs --checkpoint or --json (to find the checkpoint)".into())
         })?;
         let doc = PartialDocument::read(path)?;
-        if doc.shard != shard || doc.total != total || doc.points.len() > ensembles.len() {
-            return Err(CliError::Usage(format!(
-                "{} is the checkpoint of another run (shard {} of {:?}); resume with the command that wrote it",
-                path.display(),
-                doc.shard,
-                doc.total
-            )));
-        }
+        check_resume(path, &doc, &ensembles, shard, &total)?;
         doc
     } else {
         PartialDocument::new(shard, total)
@@ -186,6 +184,62 @@ pub fn run_ensembles(
         remove_checkpoint(checkpoint.as_deref(), path);
     }
     Ok(Outcome::Finished(estimates))
+}
+
+/// Refuse a checkpoint of another run, naming the checkpoint and the
+/// first field that differs (`seed 7 in the checkpoint, 8 asked`).
+fn check_resume(
+    path: &Path,
+    doc: &PartialDocument,
+    ensembles: &[Ensemble<Built>],
+    shard: Shard,
+    total: &Range<u64>,
+) -> Result<(), CliError> {
+    let another = |what: &str, saved: &dyn Display, asked: &dyn Display| {
+        CliError::Usage(format!(
+            "{} is the checkpoint of another run: {what} {saved} in the checkpoint, {asked} asked; resume with the command that wrote it",
+            path.display()
+        ))
+    };
+    if doc.shard != shard {
+        return Err(another("shard", &doc.shard, &shard));
+    }
+    if doc.total != *total {
+        return Err(another(
+            "initial conditions",
+            &format_args!("{:?}", doc.total),
+            &format_args!("{total:?}"),
+        ));
+    }
+    if doc.points.len() > ensembles.len() {
+        return Err(another(
+            "number of α values",
+            &format_args!("at least {}", doc.points.len()),
+            &ensembles.len(),
+        ));
+    }
+    for (p, e) in doc.points.iter().zip(ensembles) {
+        match p.provenance.difference(&e.provenance()) {
+            Ok(()) => {}
+            Err(RunDifference::Field { what, first, other }) => {
+                return Err(another(what, &first, &other));
+            }
+            Err(err) => {
+                return Err(CliError::Usage(format!(
+                    "cannot resume from {}: {err}",
+                    path.display()
+                )));
+            }
+        }
+        if p.indices != e.indices {
+            return Err(another(
+                "initial conditions",
+                &format_args!("{:?}", p.indices),
+                &format_args!("{:?}", e.indices),
+            ));
+        }
+    }
+    Ok(())
 }
 
 fn set_point(doc: &mut PartialDocument, i: usize, part: PartialRun) {

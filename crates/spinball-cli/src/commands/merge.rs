@@ -1,10 +1,11 @@
 //! `spinball merge`: the shards of a run, combined into the result one
 //! unsharded run gives, bitwise.
 
+use std::fmt::Display;
 use std::path::{Path, PathBuf};
 
 use clap::Args;
-use spinball_analysis::run::merge_partials;
+use spinball_analysis::run::{RunDifference, merge_partials};
 
 use crate::commands::spectrum::{SPECTRUM_PARTIAL_KIND, SpectrumDocument};
 use crate::documents::{PARTIAL_KIND, PartialDocument};
@@ -46,10 +47,22 @@ pub fn merge(args: &MergeArgs) -> Result<(), CliError> {
             .map(|p| {
                 let text = std::fs::read_to_string(p).map_err(CliError::usage)?;
                 serde_json::from_str::<SpectrumDocument>(&text).map_err(|e| {
-                    CliError::Usage(format!("{} is not a spectrum result: {e}", p.display()))
+                    CliError::Usage(format!(
+                        "{} is not a valid spinball spectrum result: {e}",
+                        p.display()
+                    ))
                 })
             })
             .collect::<Result<Vec<_>, _>>()?;
+        for (path, d) in args.parts.iter().zip(&docs).skip(1) {
+            d.same_run(&docs[0]).map_err(|why| {
+                CliError::Usage(format!(
+                    "{} and {} are not shards of one spectrum run: {why}",
+                    args.parts[0].display(),
+                    path.display()
+                ))
+            })?;
+        }
         return SpectrumDocument::merge(docs)?.write_results(&args.out);
     }
     if first_kind != PARTIAL_KIND {
@@ -65,16 +78,46 @@ pub fn merge(args: &MergeArgs) -> Result<(), CliError> {
         .collect::<Result<Vec<_>, _>>()?;
     let (first_path, first) = &docs[0];
     for (path, d) in &docs[1..] {
-        if d.total != first.total || d.points.len() != first.points.len() {
-            return Err(CliError::Usage(format!(
-                "{} and {} are shards of different runs ({} point(s) over {:?} vs {} over {:?})",
+        let differ = |what: &str, a: &dyn Display, b: &dyn Display| {
+            CliError::Usage(format!(
+                "{} and {} are shards of different runs: {what} {a} in {}, {b} in {}; merge only the shards of one command",
                 first_path.display(),
                 path.display(),
-                first.points.len(),
-                first.total,
-                d.points.len(),
-                d.total
-            )));
+                first_path.display(),
+                path.display()
+            ))
+        };
+        if d.total != first.total {
+            return Err(differ(
+                "initial conditions",
+                &format_args!("{:?}", first.total),
+                &format_args!("{:?}", d.total),
+            ));
+        }
+        if d.points.len() != first.points.len() {
+            return Err(differ(
+                "number of α values",
+                &first.points.len(),
+                &d.points.len(),
+            ));
+        }
+        for (a, b) in first.points.iter().zip(&d.points) {
+            match a.provenance.difference(&b.provenance) {
+                Ok(()) => {}
+                Err(RunDifference::Field { what, first, other }) => {
+                    return Err(differ(what, &first, &other));
+                }
+                Err(e) => {
+                    return Err(CliError::Usage(format!(
+                        "cannot merge {} and {}: {e}",
+                        first_path.display(),
+                        path.display()
+                    )));
+                }
+            }
+            if a.version != b.version {
+                return Err(differ("version", &a.version, &b.version));
+            }
         }
     }
     let estimates = (0..first.points.len())

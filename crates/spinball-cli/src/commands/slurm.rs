@@ -38,8 +38,8 @@ pub struct SlurmArgs {
     /// and resumes when resubmitted.
     #[arg(long, default_value = "01:00:00")]
     pub time: String,
-    /// CPUs per task (its threads).
-    #[arg(long, default_value_t = 2)]
+    /// CPUs per task (its threads), 1..=1024.
+    #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u32).range(1..=1024))]
     pub cpus_per_task: u32,
     /// The `spinball` binary the jobs run (default: this one).
     #[arg(long)]

@@ -98,6 +98,49 @@ impl SpectrumDocument {
         shown
     }
 
+    /// Whether `self` is a shard of the same run as `first`.
+    ///
+    /// # Errors
+    /// What differs, first field first (`kind`, table by its geometry,
+    /// α, initial conditions, number of points).
+    pub fn same_run(&self, first: &SpectrumDocument) -> Result<(), String> {
+        if self.kind != SPECTRUM_PARTIAL_KIND {
+            return Err(format!(
+                "its kind is `{}`, not `{SPECTRUM_PARTIAL_KIND}`",
+                self.kind
+            ));
+        }
+        first
+            .table
+            .same_table(&self.table)
+            .map_err(|e| e.to_string())?;
+        if self
+            .alphas
+            .iter()
+            .map(|a| a.to_bits())
+            .ne(first.alphas.iter().map(|a| a.to_bits()))
+        {
+            return Err(format!(
+                "alpha {:?} in one, {:?} in the other",
+                first.alphas, self.alphas
+            ));
+        }
+        if self.total != first.total {
+            return Err(format!(
+                "initial conditions {:?} in one, {:?} in the other",
+                first.total, self.total
+            ));
+        }
+        if self.points.len() != first.points.len() {
+            return Err(format!(
+                "{} point(s) in one, {} in the other",
+                first.points.len(),
+                self.points.len()
+            ));
+        }
+        Ok(())
+    }
+
     /// Join the shards of one spectrum run into the whole result
     /// (bitwise that of one unsharded run, bar the wall times).
     ///
@@ -107,17 +150,11 @@ impl SpectrumDocument {
     pub fn merge(mut parts: Vec<SpectrumDocument>) -> Result<SpectrumDocument, CliError> {
         let first = parts[0].clone();
         for p in &parts {
-            if p.kind != SPECTRUM_PARTIAL_KIND
-                || p.table != first.table
-                || p.alphas != first.alphas
-                || p.total != first.total
-                || p.points.len() != first.points.len()
-            {
-                return Err(CliError::Usage(format!(
-                    "the spectrum results are not shards of one run ({} at α {:?} over {:?} vs {} at α {:?} over {:?})",
-                    first.table, first.alphas, first.total, p.table, p.alphas, p.total
-                )));
-            }
+            p.same_run(&first).map_err(|why| {
+                CliError::Usage(format!(
+                    "the spectrum results are not shards of one run: {why}"
+                ))
+            })?;
         }
         parts.sort_by_key(|p| p.points.first().map_or(0, |e| e.first_index));
         let points = (0..first.points.len())

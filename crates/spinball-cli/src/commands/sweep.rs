@@ -82,8 +82,8 @@ pub struct SweepArgs {
     #[arg(long, value_name = "paper|microcanonical", default_value = "paper")]
     pub sampler: Sampler,
     /// Worker threads (default: all cores); results do not depend on it.
-    #[arg(long, value_name = "T", value_parser = clap::value_parser!(u64).range(1..))]
-    pub threads: Option<u64>,
+    #[arg(long, value_name = "T", value_parser = crate::run_args::parse_threads)]
+    pub threads: Option<usize>,
     /// Allow α > 1 (the mathematical extension towards no-slip).
     #[arg(long)]
     pub extended: bool,
@@ -115,9 +115,7 @@ impl SweepArgs {
 
     /// The ensemble of one point: the table, `law` and every other setting.
     fn ensemble(&self, law: SpinLaw) -> Ensemble {
-        let threads = self
-            .threads
-            .map_or(Threads::All, |n| Threads::Fixed(n as usize));
+        let threads = self.threads.map_or(Threads::All, Threads::Fixed);
         Ensemble::new(self.table, law)
             .with_sampler(self.sampler)
             .with_seed(self.seed)
