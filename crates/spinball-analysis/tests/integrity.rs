@@ -91,8 +91,10 @@ fn a_count_that_does_not_hold_and_a_missing_checksum_are_refused() {
         e.contains("holds 7") && e.contains("says it holds 6"),
         "{e}"
     );
+    // A file of 0.1.0, which wrote no checksum.
     let e = edited(&part, |v| {
         v.as_object_mut().unwrap().remove("checksum");
+        v["version"] = "0.1.0".into();
     })
     .unwrap_err();
     assert!(

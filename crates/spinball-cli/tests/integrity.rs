@@ -146,8 +146,10 @@ fn merge_refuses_an_edited_shard_naming_it() {
         ),
         (
             "no checksum",
+            // A file of 0.1.0, which wrote no checksum.
             &|v| {
                 v["points"][0].as_object_mut().unwrap().remove("checksum");
+                v["points"][0]["version"] = "0.1.0".into();
             },
             "no checksum: it was written by spinball 0.1.0",
         ),
