@@ -35,11 +35,9 @@
 use spinball_analysis::estimators::{
     LyapunovOptions, Method, SpectrumOptions, largest_lyapunov, lyapunov_spectrum,
 };
-use spinball_core::{
-    Billiard, Pcg64, Sampler, SpinLaw, State, TangentVector, ic_rng, random_direction,
-};
-use spinball_geometry::{Circle, DVec2, Rectangle, Sinai, Stadium, Table};
-use spinball_lanes::{Isa, LaneBilliard};
+use spinball_core::{Billiard, SpinLaw, State, TangentVector};
+use spinball_geometry::{Stadium, Table};
+use spinball_lanes::LaneBilliard;
 use spinball_test_support::lanes::{
     close, frame_from, ics, lanes_for, laws, scalar_end, special, tables,
 };

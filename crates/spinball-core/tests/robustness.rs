@@ -12,7 +12,7 @@ use common::{ALPHAS, law, paper_tables, signed_distance};
 use spinball_core::{
     Ball, Billiard, Boundary, Collision, MAX_ZERO_TIME_RUN, Sampler, State, StepError,
 };
-use spinball_geometry::{ArcSegment, DVec2, LineSegment, Segment, SegmentTable, Table};
+use spinball_geometry::{DVec2, Table};
 use spinball_test_support::mushroom;
 
 /// Checks every collision of a run: finite state and flight time, the

@@ -1,5 +1,5 @@
 //! Shared helpers for the core integration tests.
-#![allow(dead_code)]
+#![allow(dead_code, unused_imports)]
 
 pub use spinball_test_support::signed_distance;
 

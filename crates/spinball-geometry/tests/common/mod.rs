@@ -1,7 +1,7 @@
 //! Shared helpers for the geometry integration tests: an independent
 //! description of each table (signed distance and the documented Birkhoff
 //! parametrisation), written from the docs rather than from the code under test.
-#![allow(dead_code)]
+#![allow(dead_code, unused_imports)]
 
 pub use spinball_test_support::{mushroom, segment_sinai, signed_distance};
 

@@ -65,79 +65,79 @@ simd_lanes! {
             srli: _mm256_srli_epi64, slli: _mm256_slli_epi64, shift: EXP_SHIFT as i32 }
     cast { to_bits: _mm256_castpd_si256, to_pd: _mm256_castsi256_pd }
     own {
-    #[inline(always)]
-    fn abs(self) -> Self {
-        // SAFETY: `self.1` proves this CPU has AVX2.
-        Avx2(unsafe { _mm256_andnot_pd(_mm256_set1_pd(-0.0), self.0) }, self.1)
-    }
-    predicate_compares!(Avx2Mask, _mm256_cmp_pd);
-    #[inline(always)]
-    fn select(m: Avx2Mask, a: Self, b: Self) -> Self {
-        // SAFETY: `a.1` proves this CPU has AVX2.
-        Avx2(unsafe { _mm256_blendv_pd(b.0, a.0, m.0) }, a.1)
-    }
-    #[inline(always)]
-    fn lookup(p: &Palette, index: Self) -> Self {
-        let t = p.entries();
-        // SAFETY: AVX2 intrinsics (and SSE4.1's `_mm_min_epu32`, which AVX2
-        // implies); `index.1` proves this CPU has AVX2. The gather reads `t[k]` for each lane's
-        // index `k`, clamped to `t.len() - 1` (a NaN or out-of-range lane
-        // converts to `i32::MIN`, which is `2^31` unsigned, and clamps too),
-        // so every read is inside `t`.
-        Avx2(
-            unsafe {
-                let k = _mm256_cvttpd_epi32(index.0);
-                let k = _mm_min_epu32(k, _mm_set1_epi32(t.len() as i32 - 1));
-                _mm256_i32gather_pd::<8>(t.as_ptr(), k)
-            },
-            index.1,
-        )
-    }
-    #[inline(always)]
-    fn fetch(r: &Records, index: Self) -> [Self; 8] {
-        let rows = r.rows();
-        // Each lane's index, clamped as `lookup` clamps it (the rows are as
-        // many as a column's entries).
-        // SAFETY: AVX2 and SSE4.1 intrinsics (AVX2 implies SSE4.1);
-        // `index.1` proves this CPU has AVX2.
-        let k = unsafe {
-            let k = _mm256_cvttpd_epi32(index.0);
-            _mm_min_epu32(k, _mm_set1_epi32(rows.len() as i32 - 1))
-        };
-        let lane = |i: i32| -> &[f64; 8] {
-            // SAFETY: SSE4.1 intrinsics, as above (`rows[k]` is then
-            // bounds-checked).
+        #[inline(always)]
+        fn abs(self) -> Self {
+            // SAFETY: `self.1` proves this CPU has AVX2.
+            Avx2(unsafe { _mm256_andnot_pd(_mm256_set1_pd(-0.0), self.0) }, self.1)
+        }
+        predicate_compares!(Avx2Mask, _mm256_cmp_pd);
+        #[inline(always)]
+        fn select(m: Avx2Mask, a: Self, b: Self) -> Self {
+            // SAFETY: `a.1` proves this CPU has AVX2.
+            Avx2(unsafe { _mm256_blendv_pd(b.0, a.0, m.0) }, a.1)
+        }
+        #[inline(always)]
+        fn lookup(p: &Palette, index: Self) -> Self {
+            let t = p.entries();
+            // SAFETY: AVX2 intrinsics (and SSE4.1's `_mm_min_epu32`, which AVX2
+            // implies); `index.1` proves this CPU has AVX2. The gather reads `t[k]` for each lane's
+            // index `k`, clamped to `t.len() - 1` (a NaN or out-of-range lane
+            // converts to `i32::MIN`, which is `2^31` unsigned, and clamps too),
+            // so every read is inside `t`.
+            Avx2(
+                unsafe {
+                    let k = _mm256_cvttpd_epi32(index.0);
+                    let k = _mm_min_epu32(k, _mm_set1_epi32(t.len() as i32 - 1));
+                    _mm256_i32gather_pd::<8>(t.as_ptr(), k)
+                },
+                index.1,
+            )
+        }
+        #[inline(always)]
+        fn fetch(r: &Records, index: Self) -> [Self; 8] {
+            let rows = r.rows();
+            // Each lane's index, clamped as `lookup` clamps it (the rows are as
+            // many as a column's entries).
+            // SAFETY: AVX2 and SSE4.1 intrinsics (AVX2 implies SSE4.1);
+            // `index.1` proves this CPU has AVX2.
             let k = unsafe {
-                match i {
-                    0 => _mm_extract_epi32::<0>(k),
-                    1 => _mm_extract_epi32::<1>(k),
-                    2 => _mm_extract_epi32::<2>(k),
-                    _ => _mm_extract_epi32::<3>(k),
+                let k = _mm256_cvttpd_epi32(index.0);
+                _mm_min_epu32(k, _mm_set1_epi32(rows.len() as i32 - 1))
+            };
+            let lane = |i: i32| -> &[f64; 8] {
+                // SAFETY: SSE4.1 intrinsics, as above (`rows[k]` is then
+                // bounds-checked).
+                let k = unsafe {
+                    match i {
+                        0 => _mm_extract_epi32::<0>(k),
+                        1 => _mm_extract_epi32::<1>(k),
+                        2 => _mm_extract_epi32::<2>(k),
+                        _ => _mm_extract_epi32::<3>(k),
+                    }
+                };
+                &rows[k as u32 as usize]
+            };
+            let (a, b, c, d) = (lane(0), lane(1), lane(2), lane(3));
+            // Columns `2j` and `2j + 1`: lanes 0 and 2 of the pair in one
+            // register, lanes 1 and 3 in another, interleaved.
+            let pair = |j: usize| -> (Avx2, Avx2) {
+                // SAFETY: AVX intrinsics (`index.1` proves AVX2); each 16-byte
+                // load reads entries `2j, 2j + 1` (`j < 4`) of a row of 8.
+                unsafe {
+                    let two = |row: &[f64; 8]| _mm_loadu_pd(row[2 * j..2 * j + 2].as_ptr());
+                    let ac = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(two(a)), two(c));
+                    let bd = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(two(b)), two(d));
+                    (
+                        Avx2(_mm256_unpacklo_pd(ac, bd), index.1),
+                        Avx2(_mm256_unpackhi_pd(ac, bd), index.1),
+                    )
                 }
             };
-            &rows[k as u32 as usize]
-        };
-        let (a, b, c, d) = (lane(0), lane(1), lane(2), lane(3));
-        // Columns `2j` and `2j + 1`: lanes 0 and 2 of the pair in one
-        // register, lanes 1 and 3 in another, interleaved.
-        let pair = |j: usize| -> (Avx2, Avx2) {
-            // SAFETY: AVX intrinsics (`index.1` proves AVX2); each 16-byte
-            // load reads entries `2j, 2j + 1` (`j < 4`) of a row of 8.
-            unsafe {
-                let two = |row: &[f64; 8]| _mm_loadu_pd(row[2 * j..2 * j + 2].as_ptr());
-                let ac = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(two(a)), two(c));
-                let bd = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(two(b)), two(d));
-                (
-                    Avx2(_mm256_unpacklo_pd(ac, bd), index.1),
-                    Avx2(_mm256_unpackhi_pd(ac, bd), index.1),
-                )
-            }
-        };
-        let (c0, c1) = pair(0);
-        let (c2, c3) = pair(1);
-        let (c4, c5) = pair(2);
-        let (c6, c7) = pair(3);
-        [c0, c1, c2, c3, c4, c5, c6, c7]
+            let (c0, c1) = pair(0);
+            let (c2, c3) = pair(1);
+            let (c4, c5) = pair(2);
+            let (c6, c7) = pair(3);
+            [c0, c1, c2, c3, c4, c5, c6, c7]
+        }
     }
-}
 }

@@ -86,45 +86,45 @@ simd_lanes! {
             srli: _mm512_srli_epi64, slli: _mm512_slli_epi64, shift: EXP_SHIFT }
     cast { to_bits: _mm512_castpd_si512, to_pd: _mm512_castsi512_pd }
     own {
-    #[inline(always)]
-    fn abs(self) -> Self {
-        // SAFETY: `self.1` proves this CPU has AVX-512 F, DQ, VL and BW.
-        Avx512(unsafe { _mm512_abs_pd(self.0) }, self.1)
-    }
-    predicate_compares!(Avx512Mask, _mm512_cmp_pd_mask);
-    #[inline(always)]
-    fn select(m: Avx512Mask, a: Self, b: Self) -> Self {
-        // Lanes with the mask bit set take the second operand.
-        // SAFETY: `a.1` proves this CPU has AVX-512 F, DQ, VL and BW.
-        Avx512(unsafe { _mm512_mask_blend_pd(m.0, b.0, a.0) }, a.1)
-    }
-    #[inline(always)]
-    fn lookup(p: &Palette, index: Self) -> Self {
-        let t = p.entries();
-        // SAFETY: AVX-512 F and DQ intrinsics; `index.1` proves this CPU has
-        // AVX-512 F, DQ, VL and BW. The loads read `t[0..8]` and, for 16 entries,
-        // `t[8..16]`, inside `t`; the permutes use only the low 3 or 4 bits
-        // of each index. The gather reads `t[k]` for each lane's index `k`,
-        // clamped to `t.len() - 1` (a NaN or out-of-range lane converts to
-        // `2^63` unsigned, which clamps too), so every read is inside `t`.
-        Avx512(
-            unsafe {
-                let k = _mm512_cvttpd_epi64(index.0);
-                match t.len() {
-                    8 => _mm512_permutexvar_pd(k, _mm512_loadu_pd(t.as_ptr())),
-                    16 => _mm512_permutex2var_pd(
-                        _mm512_loadu_pd(t.as_ptr()),
-                        k,
-                        _mm512_loadu_pd(t.as_ptr().add(8)),
-                    ),
-                    n => {
-                        let k = _mm512_min_epu64(k, _mm512_set1_epi64(n as i64 - 1));
-                        _mm512_i64gather_pd::<8>(k, t.as_ptr())
+        #[inline(always)]
+        fn abs(self) -> Self {
+            // SAFETY: `self.1` proves this CPU has AVX-512 F, DQ, VL and BW.
+            Avx512(unsafe { _mm512_abs_pd(self.0) }, self.1)
+        }
+        predicate_compares!(Avx512Mask, _mm512_cmp_pd_mask);
+        #[inline(always)]
+        fn select(m: Avx512Mask, a: Self, b: Self) -> Self {
+            // Lanes with the mask bit set take the second operand.
+            // SAFETY: `a.1` proves this CPU has AVX-512 F, DQ, VL and BW.
+            Avx512(unsafe { _mm512_mask_blend_pd(m.0, b.0, a.0) }, a.1)
+        }
+        #[inline(always)]
+        fn lookup(p: &Palette, index: Self) -> Self {
+            let t = p.entries();
+            // SAFETY: AVX-512 F and DQ intrinsics; `index.1` proves this CPU has
+            // AVX-512 F, DQ, VL and BW. The loads read `t[0..8]` and, for 16 entries,
+            // `t[8..16]`, inside `t`; the permutes use only the low 3 or 4 bits
+            // of each index. The gather reads `t[k]` for each lane's index `k`,
+            // clamped to `t.len() - 1` (a NaN or out-of-range lane converts to
+            // `2^63` unsigned, which clamps too), so every read is inside `t`.
+            Avx512(
+                unsafe {
+                    let k = _mm512_cvttpd_epi64(index.0);
+                    match t.len() {
+                        8 => _mm512_permutexvar_pd(k, _mm512_loadu_pd(t.as_ptr())),
+                        16 => _mm512_permutex2var_pd(
+                            _mm512_loadu_pd(t.as_ptr()),
+                            k,
+                            _mm512_loadu_pd(t.as_ptr().add(8)),
+                        ),
+                        n => {
+                            let k = _mm512_min_epu64(k, _mm512_set1_epi64(n as i64 - 1));
+                            _mm512_i64gather_pd::<8>(k, t.as_ptr())
+                        }
                     }
-                }
-            },
-            index.1,
-        )
+                },
+                index.1,
+            )
+        }
     }
-}
 }

@@ -369,15 +369,13 @@ macro_rules! simd_lanes {
             #[inline(always)]
             fn mantissa(self) -> Self {
                 // SAFETY: `self.1` proves this CPU has the level's features.
-                $t(
-                    unsafe {
-                        $to_pd($ior(
-                            $iand($to_bits(self.0), $iset1($crate::lanes::MANTISSA as i64)),
-                            $iset1($crate::lanes::ONE_BITS as i64),
-                        ))
-                    },
-                    self.1,
-                )
+                let m = unsafe {
+                    $to_pd($ior(
+                        $iand($to_bits(self.0), $iset1($crate::lanes::MANTISSA as i64)),
+                        $iset1($crate::lanes::ONE_BITS as i64),
+                    ))
+                };
+                $t(m, self.1)
             }
             #[inline(always)]
             fn pow2(e: $b) -> Self {
