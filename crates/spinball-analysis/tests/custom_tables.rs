@@ -15,6 +15,7 @@ use spinball_core::{Sampler, SpinLaw, State};
 use spinball_geometry::{
     ArcSegment, Boundary, DVec2, LineSegment, Segment, SegmentTable, Sinai, Stadium,
 };
+use spinball_test_support::segment_sinai;
 
 fn line(a: (f64, f64), b: (f64, f64)) -> Segment {
     Segment::Line(LineSegment::new(DVec2::new(a.0, a.1), DVec2::new(b.0, b.1)).unwrap())
@@ -28,22 +29,6 @@ fn segment_stadium(a: f64) -> SegmentTable {
         line((a, 1.0), (-a, 1.0)),
         Segment::Arc(ArcSegment::new(DVec2::new(-a, 0.0), 1.0, FRAC_PI_2, PI).unwrap()),
     ])
-    .unwrap()
-}
-
-/// The Sinai billiard (square of half-side `l` minus a disk of radius `r`).
-fn segment_sinai(l: f64, r: f64) -> SegmentTable {
-    SegmentTable::with_holes(
-        vec![
-            line((-l, -l), (l, -l)),
-            line((l, -l), (l, l)),
-            line((l, l), (-l, l)),
-            line((-l, l), (-l, -l)),
-        ],
-        vec![vec![Segment::Arc(
-            ArcSegment::new(DVec2::ZERO, r, 0.0, -TAU).unwrap(),
-        )]],
-    )
     .unwrap()
 }
 

@@ -12,7 +12,8 @@ use common::{ALPHAS, law, paper_tables, signed_distance};
 use spinball_core::{
     Ball, Billiard, Boundary, Collision, MAX_ZERO_TIME_RUN, Sampler, State, StepError,
 };
-use spinball_geometry::{ArcSegment, DVec2, LineSegment, Segment, SegmentTable, Table};
+use spinball_geometry::{DVec2, Table};
+use spinball_test_support::mushroom;
 
 /// Checks every collision of a run: finite state and flight time, the
 /// contact where the straight flight says it is (no teleport), the ball on
@@ -412,22 +413,6 @@ fn starting_on_a_wall() {
         let times = keep_going(&table, |_| State::new(p, v, -0.2));
         assert!(times.iter().all(|&t| t > 0.0), "{spec} from {p:?}");
     }
-}
-
-/// The mushroom of the `SegmentTable` docs (cap radius 1, stem half-width
-/// 0.3, stem height 1).
-fn mushroom() -> SegmentTable {
-    let p = DVec2::new;
-    let line = |a, b| Segment::Line(LineSegment::new(a, b).unwrap());
-    SegmentTable::new(vec![
-        line(p(-0.3, -1.0), p(0.3, -1.0)),
-        line(p(0.3, -1.0), p(0.3, 0.0)),
-        line(p(0.3, 0.0), p(1.0, 0.0)),
-        Segment::Arc(ArcSegment::new(DVec2::ZERO, 1.0, 0.0, PI).unwrap()),
-        line(p(-1.0, 0.0), p(-0.3, 0.0)),
-        line(p(-0.3, 0.0), p(-0.3, -1.0)),
-    ])
-    .unwrap()
 }
 
 #[test]

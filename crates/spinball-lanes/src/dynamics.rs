@@ -41,9 +41,9 @@ impl Law {
     /// than branched on, which keeps a step one basic block for the
     /// compiler's scheduler (the mask is loop-invariant and hoisted).
     #[inline(always)]
-    pub fn coupled<L: Lanes>(&self) -> L::Mask {
+    pub fn coupled<L: Lanes>(&self, cpu: L::Needs) -> L::Mask {
         let flag = if self.coupled { 1.0 } else { 0.0 };
-        L::splat(flag).gt(L::splat(0.0))
+        L::splat(cpu, flag).gt(L::splat(cpu, 0.0))
     }
 
     /// `|V|² = |v|² + α u²`, in `SpinLaw::norm2`'s order.
@@ -86,7 +86,7 @@ impl<L: Lanes> Balls<L> {
     /// `1/|V|²` of the current state (what `Ball::new` stores).
     #[inline(always)]
     pub fn inv_shell(&self, law: &Law) -> L {
-        L::splat(1.0) / law.norm2(self.vx, self.vy, self.u)
+        L::splat(self.x.proof(), 1.0) / law.norm2(self.vx, self.vy, self.u)
     }
 
     /// The first half of the cast from the current state ([`Geom::search`]).
@@ -140,14 +140,15 @@ pub(crate) fn collide<L: Lanes>(
     let k = ((vx * tx + vy * ty) - u * law.alpha) * law.delta;
     let vx1 = tx * k - vx;
     let vy1 = ty * k - vy;
-    let coupled = law.coupled::<L>();
+    let cpu = vx.proof();
+    let coupled = law.coupled::<L>(cpu);
     let u1 = L::select(coupled, -u - k, u);
     // One Newton step back onto the shell.
     let inv_shell = match shell {
         Shell::Fixed(inv) => inv,
-        Shell::Own => L::splat(1.0) / law.norm2(vx, vy, u),
+        Shell::Own => L::splat(cpu, 1.0) / law.norm2(vx, vy, u),
     };
-    let c = L::splat(1.5) - law.norm2(vx1, vy1, u1) * 0.5 * inv_shell;
+    let c = L::splat(cpu, 1.5) - law.norm2(vx1, vy1, u1) * 0.5 * inv_shell;
     b.u = L::select(coupled, u1 * c, u1);
     b.vx = vx1 * c;
     b.vy = vy1 * c;
@@ -188,15 +189,20 @@ impl<L: Lanes> TangentStep<L> {
         let vn = nx * s.vx + ny * s.vy;
         let vt = tx * s.vx + ty * s.vy;
         let k = h.curvature;
+        let cpu = vn.proof();
         let (curvature_dvx, curvature_dvy, curvature_du) = if G::CURVED {
             let gu = s.u * law.gamma;
             (
                 k * ((vt * nx + vn * tx) * law.neg_one_beta + gu * nx),
                 k * ((vt * ny + vn * ty) * law.neg_one_beta + gu * ny),
-                L::select(law.coupled::<L>(), k * law.delta * vn, L::splat(0.0)),
+                L::select(
+                    law.coupled::<L>(cpu),
+                    k * law.delta * vn,
+                    L::splat(cpu, 0.0),
+                ),
             )
         } else {
-            let z = L::splat(0.0);
+            let z = L::splat(cpu, 0.0);
             (z, z, z)
         };
         TangentStep {
@@ -204,7 +210,7 @@ impl<L: Lanes> TangentStep<L> {
             nx,
             ny,
             vt,
-            inv_vn: L::splat(1.0) / vn,
+            inv_vn: L::splat(cpu, 1.0) / vn,
             jump_x: s.vx - after.vx,
             jump_y: s.vy - after.vy,
             curvature_dvx,
@@ -232,7 +238,7 @@ impl<L: Lanes> TangentStep<L> {
         let kk = ((dvx * tx + dvy * ty) - du * law.alpha) * law.delta;
         let mut dvx_new = tx * kk - dvx;
         let mut dvy_new = ty * kk - dvy;
-        let mut du_new = L::select(law.coupled::<L>(), -du - kk, du);
+        let mut du_new = L::select(law.coupled::<L>(dx.proof()), -du - kk, du);
         if G::CURVED {
             dvx_new = dvx_new + ds * self.curvature_dvx;
             dvy_new = dvy_new + ds * self.curvature_dvy;
@@ -259,10 +265,10 @@ pub(crate) struct LogProduct<L: Lanes> {
 
 impl<L: Lanes> LogProduct<L> {
     #[inline(always)]
-    pub fn new() -> Self {
+    pub fn new(cpu: L::Needs) -> Self {
         LogProduct {
-            m: L::splat(1.0),
-            e: L::Bits::splat(0),
+            m: L::splat(cpu, 1.0),
+            e: L::Bits::splat(cpu, 0),
             pushes: 0,
         }
     }
@@ -302,7 +308,7 @@ pub(crate) fn pow2_renormalise<L: Lanes>(z: &mut [L; 5]) -> L::Bits {
         .max(z[4].abs());
     let e = m.exponent();
     // 2^(1023 - e): biased exponent 2046 - e.
-    let scale = L::pow2(L::Bits::splat(2046).sub(e));
+    let scale = L::pow2(L::Bits::splat(m.proof(), 2046).sub(e));
     for c in z.iter_mut() {
         *c = *c * scale;
     }
@@ -321,8 +327,8 @@ pub(crate) struct ZeroRun<L: Lanes> {
 
 impl<L: Lanes> ZeroRun<L> {
     #[inline(always)]
-    pub fn new() -> Self {
-        let zero = L::splat(0.0);
+    pub fn new(cpu: L::Needs) -> Self {
+        let zero = L::splat(cpu, 0.0);
         ZeroRun {
             run: zero,
             stuck: zero.ne(zero),
@@ -332,11 +338,12 @@ impl<L: Lanes> ZeroRun<L> {
     /// Count a collision that took `time`.
     #[inline(always)]
     pub fn watch(&mut self, time: L) {
-        let zero = L::splat(0.0);
+        let cpu = time.proof();
+        let zero = L::splat(cpu, 0.0);
         self.run = L::select(time.eq(zero), self.run + 1.0, zero);
         self.stuck = self
             .stuck
-            .or(self.run.gt(L::splat(f64::from(MAX_ZERO_TIME_RUN))));
+            .or(self.run.gt(L::splat(cpu, f64::from(MAX_ZERO_TIME_RUN))));
     }
 
     /// Lanes that never got stuck.
@@ -352,8 +359,8 @@ mod tests {
 
     #[test]
     fn log_product_is_exact_up_to_the_final_ln() {
-        let mut p = LogProduct::<f64>::new();
-        let mut q = LogProduct::<f64>::new();
+        let mut p = LogProduct::<f64>::new(crate::isa::Baseline);
+        let mut q = LogProduct::<f64>::new(crate::isa::Baseline);
         let (mut sp, mut sq) = (0.0f64, 0.0f64);
         for k in 0..2000 {
             let f = 1e-7 * (1.0 + 0.001 * k as f64);

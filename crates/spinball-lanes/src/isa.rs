@@ -22,7 +22,9 @@
 //! zero-sized proofs `Avx2Cpu` and `Avx512Cpu` (crate-private) can only be
 //! made by detecting the features, the entry points compiled for a level
 //! take the level's proof, and the trait `ProvenBy` tells the compiler which
-//! lane types a proof allows (each lane type names the proof it needs).
+//! lane types a proof allows (each lane type names the proof it needs). The
+//! lane values hold their proof too, so none is made without one (the
+//! crate's `lanes` module).
 //!
 //! This module is the bottom layer of the crate: it uses no other module.
 
@@ -147,17 +149,29 @@ impl FromStr for Isa {
 /// (`Lanes::Needs`); code that runs lanes takes a proof `C` and requires
 /// `L::Needs: ProvenBy<C>`, so the compiler refuses, say, AVX2 lanes in the
 /// baseline entry point. The relation is the features' implication: AVX-512F
-/// implies AVX2, and both imply the baseline.
-pub(crate) trait ProvenBy<C> {}
+/// implies AVX2, and both imply the baseline; [`from_proof`](Self::from_proof)
+/// turns the stronger proof into the weaker one (the lane constructors take
+/// the weaker one, `Lanes::Needs`).
+pub(crate) trait ProvenBy<C>: Copy {
+    /// The proof of `Self`'s features, from the proof `c` of features that
+    /// imply them.
+    fn from_proof(c: C) -> Self;
+}
 
 /// The target's default instruction set, which every CPU the binary runs on
 /// has (the rest of the binary is compiled for it too): needs no detection.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Baseline;
 
-impl ProvenBy<Baseline> for Baseline {}
+impl ProvenBy<Baseline> for Baseline {
+    #[inline(always)]
+    fn from_proof(c: Baseline) -> Baseline {
+        c
+    }
+}
 
-/// Proof that this CPU has AVX2: made only by [`Avx2Cpu::detect`].
+/// Proof that this CPU has AVX2: made only by [`Avx2Cpu::detect`] (and from
+/// an [`Avx512Cpu`], whose features imply AVX2).
 #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Avx2Cpu(());
@@ -173,9 +187,19 @@ impl Avx2Cpu {
 }
 
 #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-impl ProvenBy<Avx2Cpu> for Baseline {}
+impl ProvenBy<Avx2Cpu> for Baseline {
+    #[inline(always)]
+    fn from_proof(_: Avx2Cpu) -> Baseline {
+        Baseline
+    }
+}
 #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-impl ProvenBy<Avx2Cpu> for Avx2Cpu {}
+impl ProvenBy<Avx2Cpu> for Avx2Cpu {
+    #[inline(always)]
+    fn from_proof(c: Avx2Cpu) -> Avx2Cpu {
+        c
+    }
+}
 
 /// Proof that this CPU has AVX-512 F, DQ, VL and BW: made only by
 /// [`Avx512Cpu::detect`].
@@ -198,13 +222,29 @@ impl Avx512Cpu {
 }
 
 #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-impl ProvenBy<Avx512Cpu> for Baseline {}
+impl ProvenBy<Avx512Cpu> for Baseline {
+    #[inline(always)]
+    fn from_proof(_: Avx512Cpu) -> Baseline {
+        Baseline
+    }
+}
 // AVX-512F implies AVX2 (a CPU with the former has the latter, and
-// `target_feature(enable = "avx512f")` enables "avx2" too).
+// `target_feature(enable = "avx512f")` enables "avx2" too): the one place
+// besides `Avx2Cpu::detect` that makes an `Avx2Cpu`.
 #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-impl ProvenBy<Avx512Cpu> for Avx2Cpu {}
+impl ProvenBy<Avx512Cpu> for Avx2Cpu {
+    #[inline(always)]
+    fn from_proof(_: Avx512Cpu) -> Avx2Cpu {
+        Avx2Cpu(())
+    }
+}
 #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-impl ProvenBy<Avx512Cpu> for Avx512Cpu {}
+impl ProvenBy<Avx512Cpu> for Avx512Cpu {
+    #[inline(always)]
+    fn from_proof(c: Avx512Cpu) -> Avx512Cpu {
+        c
+    }
+}
 
 #[cfg(test)]
 mod tests {

@@ -43,9 +43,10 @@ pub(crate) trait Kernel: Sync {
     /// docs/PERFORMANCE.md, "Latency, not operations").
     const STREAMS: usize = 1;
     /// Run `STREAMS · L::N` initial conditions (`ins.len()`), pushing their
-    /// outcomes onto `out` in input order.
+    /// outcomes onto `out` in input order; `cpu` proves this CPU runs `L`.
     fn chunk<G: Geom, L: Lanes>(
         &self,
+        cpu: L::Needs,
         g: &G,
         law: &Law,
         ins: &[Self::In],
@@ -58,27 +59,28 @@ pub(crate) trait Kernel: Sync {
 /// Run `k` over `ins` in chunks of `K::STREAMS · L::N` lanes, results in
 /// input order.
 ///
-/// The only way the crate runs a kernel. `_cpu` proves that this CPU has the
+/// The only way the crate runs a kernel. `cpu` proves that this CPU has the
 /// features `L`'s instructions need (`L::Needs: ProvenBy<C>`, checked by the
-/// compiler): this is what the SIMD lane types' safety rests on.
+/// compiler), and becomes the proof the kernel builds its lanes with.
 #[inline(always)]
 pub(crate) fn run_chunks<G: Geom, K: Kernel, L: Lanes<Needs: ProvenBy<C>>, C>(
-    _cpu: C,
+    cpu: C,
     g: &G,
     law: &Law,
     k: &K,
     ins: &[K::In],
 ) -> Vec<K::Out> {
     const { assert!(L::N <= MAX_LANES) };
+    let cpu = L::Needs::from_proof(cpu);
     let n = L::N * K::STREAMS;
     let mut out = Vec::with_capacity(ins.len() + n);
     for c in ins.chunks(n) {
         if c.len() == n {
-            k.chunk::<G, L>(g, law, c, &mut out);
+            k.chunk::<G, L>(cpu, g, law, c, &mut out);
         } else {
             let last = c[c.len() - 1];
             let padded: Vec<K::In> = (0..n).map(|j| c.get(j).copied().unwrap_or(last)).collect();
-            k.chunk::<G, L>(g, law, &padded, &mut out);
+            k.chunk::<G, L>(cpu, g, law, &padded, &mut out);
             out.truncate(out.len() - (n - c.len()));
         }
     }
@@ -93,20 +95,20 @@ fn five<T>(f: impl Fn(usize) -> T) -> [T; 5] {
 
 /// `(x, y, vx, vy, u)` of `L::N` states.
 #[inline(always)]
-fn load_states<L: Lanes>(s: impl Fn(usize) -> State) -> [L; 5] {
+fn load_states<L: Lanes>(cpu: L::Needs, s: impl Fn(usize) -> State) -> [L; 5] {
     let mut z = [[0.0; MAX_LANES]; 5];
     for i in 0..L::N {
         for (zc, x) in z.iter_mut().zip(s(i).to_array()) {
             zc[i] = x;
         }
     }
-    five(|c| L::load(&z[c]))
+    five(|c| L::load(cpu, &z[c]))
 }
 
 /// The five components of `L::N` tangent vectors.
 #[inline(always)]
-fn load_vectors<L: Lanes>(v: impl Fn(usize) -> TangentVector) -> [L; 5] {
-    load_states(|i| State::from_array(v(i).to_array()))
+fn load_vectors<L: Lanes>(cpu: L::Needs, v: impl Fn(usize) -> TangentVector) -> [L; 5] {
+    load_states(cpu, |i| State::from_array(v(i).to_array()))
 }
 
 /// Lane `i` of a state.
@@ -116,14 +118,14 @@ fn state_of<L: Lanes>(z: &[L; 5], i: usize) -> State {
 
 /// Lanes where all of `z` is finite.
 #[inline(always)]
-fn all_finite<L: Lanes>(z: &[L]) -> L::Mask {
-    z.iter()
-        .fold(L::splat(0.0).eq(L::splat(0.0)), |m, c| m.and(c.is_finite()))
+fn all_finite<L: Lanes>(z: &[L; 5]) -> L::Mask {
+    let zero = L::splat(z[0].proof(), 0.0);
+    z.iter().fold(zero.eq(zero), |m, c| m.and(c.is_finite()))
 }
 
 /// Whether lane `i` of a mask is set (outside hot loops).
-fn mask_lane<L: Lanes>(m: L::Mask, i: usize) -> bool {
-    L::select(m, L::splat(1.0), L::splat(0.0)).lane(i) == 1.0
+fn mask_lane<L: Lanes>(cpu: L::Needs, m: L::Mask, i: usize) -> bool {
+    L::select(m, L::splat(cpu, 1.0), L::splat(cpu, 0.0)).lane(i) == 1.0
 }
 
 /// `TangentVector::dot`, in its order.
@@ -149,9 +151,16 @@ impl Kernel for Plain {
     const STREAMS: usize = 2;
 
     #[inline(always)]
-    fn chunk<G: Geom, L: Lanes>(&self, g: &G, law: &Law, ins: &[State], out: &mut Vec<Flight>) {
-        let mut a = PlainStream::<L>::new(law, |i| ins[i]);
-        let mut b = PlainStream::<L>::new(law, |i| ins[L::N + i]);
+    fn chunk<G: Geom, L: Lanes>(
+        &self,
+        cpu: L::Needs,
+        g: &G,
+        law: &Law,
+        ins: &[State],
+        out: &mut Vec<Flight>,
+    ) {
+        let mut a = PlainStream::<L>::new(cpu, law, |i| ins[i]);
+        let mut b = PlainStream::<L>::new(cpu, law, |i| ins[L::N + i]);
         // Stream `b` runs half a step behind `a`: each stream's search is
         // followed in program order by the other's landing and collision,
         // which cover its division. The last search of `b` is not landed.
@@ -183,13 +192,13 @@ struct PlainStream<L: Lanes> {
 
 impl<L: Lanes> PlainStream<L> {
     #[inline(always)]
-    fn new(law: &Law, s: impl Fn(usize) -> State) -> Self {
-        let balls = Balls::new(load_states(s));
+    fn new(cpu: L::Needs, law: &Law, s: impl Fn(usize) -> State) -> Self {
+        let balls = Balls::new(load_states(cpu, s));
         PlainStream {
             shell: Shell::Fixed(balls.inv_shell(law)),
             balls,
-            time: L::splat(0.0),
-            zero_run: ZeroRun::new(),
+            time: L::splat(cpu, 0.0),
+            zero_run: ZeroRun::new(cpu),
         }
     }
 
@@ -207,7 +216,11 @@ impl<L: Lanes> PlainStream<L> {
     /// The outcomes, lane by lane. A stuck lane reports a NaN time (rerun it
     /// on the scalar path).
     fn flights(&self, collisions: u64) -> impl Iterator<Item = Flight> {
-        let time = L::select(self.zero_run.moving(), self.time, L::splat(f64::NAN));
+        let time = L::select(
+            self.zero_run.moving(),
+            self.time,
+            L::splat(self.time.proof(), f64::NAN),
+        );
         let z = self.balls.coords();
         (0..L::N).map(move |i| Flight {
             end: state_of(&z, i),
@@ -242,6 +255,7 @@ impl Kernel for FiniteDifference {
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(
         &self,
+        cpu: L::Needs,
         g: &G,
         law: &Law,
         ins: &[(State, TangentVector)],
@@ -249,15 +263,15 @@ impl Kernel for FiniteDifference {
     ) {
         let delta0 = self.delta0;
         let inv_delta0 = 1.0 / delta0;
-        let z0 = load_states::<L>(|i| ins[i].0);
-        let d0 = load_vectors::<L>(|i| ins[i].1);
+        let z0 = load_states::<L>(cpu, |i| ins[i].0);
+        let d0 = load_vectors::<L>(cpu, |i| ins[i].1);
         let mut r = Balls::new(z0);
         let shell = Shell::Fixed(r.inv_shell(law));
         let (scaled, inv_units) = (self.scaled, self.inv_units);
         let mut s = Balls::new(five(|c| z0[c] + d0[c] * scaled[c]));
-        let mut logs = LogProduct::new();
-        let mut time = L::splat(0.0);
-        let mut zero_run = ZeroRun::<L>::new();
+        let mut logs = LogProduct::new(cpu);
+        let mut time = L::splat(cpu, 0.0);
+        let mut zero_run = ZeroRun::<L>::new(cpu);
         for _ in 0..self.collisions {
             // Both searches before either landing: the shadow's search (the
             // bulk of the work, independent of the reference) then fills the
@@ -279,7 +293,7 @@ impl Kernel for FiniteDifference {
             let dist = dot(&w, &w).sqrt();
             // Σ ln(δ/δ0), one `ln` at the end; the scalar divides by δ0.
             logs.push(dist * inv_delta0);
-            let k = L::splat(delta0) / dist;
+            let k = L::splat(cpu, delta0) / dist;
             s = Balls::new(five(|c| zr[c] + d[c] * k));
         }
         let ok = all_finite(&s.coords())
@@ -287,7 +301,7 @@ impl Kernel for FiniteDifference {
             .and(zero_run.moving());
         let z = r.coords();
         out.extend((0..L::N).map(|i| Stretch {
-            log_stretch: if mask_lane::<L>(ok, i) {
+            log_stretch: if mask_lane::<L>(cpu, ok, i) {
                 logs.ln(i)
             } else {
                 f64::NAN
@@ -332,18 +346,19 @@ impl Kernel for Tangent {
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(
         &self,
+        cpu: L::Needs,
         g: &G,
         law: &Law,
         ins: &[(State, TangentVector)],
         out: &mut Vec<Stretch>,
     ) {
-        let mut r = Balls::<L>::new(load_states(|i| ins[i].0));
+        let mut r = Balls::<L>::new(load_states(cpu, |i| ins[i].0));
         let shell = Shell::Fixed(r.inv_shell(law));
-        let mut v = load_vectors::<L>(|i| ins[i].1);
-        let mut time = L::splat(0.0);
-        let mut e = L::Bits::splat(0);
+        let mut v = load_vectors::<L>(cpu, |i| ins[i].1);
+        let mut time = L::splat(cpu, 0.0);
+        let mut e = L::Bits::splat(cpu, 0);
         let mut renorms = 0u64;
-        let mut zero_run = ZeroRun::<L>::new();
+        let mut zero_run = ZeroRun::<L>::new(cpu);
         let mut left = self.collisions;
         while left > 0 {
             let run = left.min(RENORM_EVERY);
@@ -366,7 +381,7 @@ impl Kernel for Tangent {
             let k = e.lane(i).wrapping_sub(1023u64.wrapping_mul(renorms)) as i64;
             let from = self.units.measure(&ins[i].1);
             Stretch {
-                log_stretch: if mask_lane::<L>(ok, i) {
+                log_stretch: if mask_lane::<L>(cpu, ok, i) {
                     (norm.lane(i) / from).ln() + k as f64 * std::f64::consts::LN_2
                 } else {
                     f64::NAN
@@ -404,17 +419,18 @@ impl Kernel for Spectrum {
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(
         &self,
+        cpu: L::Needs,
         g: &G,
         law: &Law,
         ins: &[(State, [TangentVector; 5])],
         out: &mut Vec<SpectrumStretch>,
     ) {
-        let mut r = Balls::<L>::new(load_states(|i| ins[i].0));
+        let mut r = Balls::<L>::new(load_states(cpu, |i| ins[i].0));
         let shell = Shell::Fixed(r.inv_shell(law));
-        let mut v: [[L; 5]; 5] = five(|j| load_vectors(|i| ins[i].1[j]));
-        let mut logs = [LogProduct::<L>::new(); 5];
-        let mut time = L::splat(0.0);
-        let mut zero_run = ZeroRun::<L>::new();
+        let mut v: [[L; 5]; 5] = five(|j| load_vectors(cpu, |i| ins[i].1[j]));
+        let mut logs = [LogProduct::<L>::new(cpu); 5];
+        let mut time = L::splat(cpu, 0.0);
+        let mut zero_run = ZeroRun::<L>::new(cpu);
         let mut left = self.collisions;
         while left > 0 {
             let run = left.min(self.qr_interval);
@@ -437,7 +453,7 @@ impl Kernel for Spectrum {
                     }
                 }
                 let n = dot(&v[i], &v[i]).sqrt();
-                let inv = L::splat(1.0) / n;
+                let inv = L::splat(cpu, 1.0) / n;
                 for a in v[i].iter_mut() {
                     *a = *a * inv;
                 }
@@ -453,7 +469,7 @@ impl Kernel for Spectrum {
         let z = r.coords();
         out.extend((0..L::N).map(|i| SpectrumStretch {
             log_stretch: std::array::from_fn(|j| {
-                if mask_lane::<L>(ok, i) {
+                if mask_lane::<L>(cpu, ok, i) {
                     logs[j].ln(i)
                 } else {
                     f64::NAN
@@ -473,195 +489,4 @@ impl Kernel for Spectrum {
 }
 
 #[cfg(test)]
-mod tests {
-    use spinball_core::{Sampler, SpinLaw};
-    use spinball_geometry::Stadium;
-
-    use super::*;
-    use crate::geom::LaneStadium;
-    use crate::isa::Baseline;
-    use crate::lanes::Wide;
-
-    /// The portable lane type (used off x86) gives the numbers of the
-    /// one-lane reference, tails included.
-    #[test]
-    fn portable_lanes_match_one_lane() {
-        let table = Stadium::new(1.0).unwrap();
-        let law = SpinLaw::new(0.4).unwrap();
-        let g = LaneStadium::new(table.a());
-        let l = Law::new(&law);
-        let ins: Vec<(State, TangentVector)> = (0..11)
-            .map(|i| {
-                let s = Sampler::Paper.initial_state(&table, &law, 3, i);
-                (s, TangentVector::from_array([0.6, -0.2, 0.1, 0.7, 0.3]))
-            })
-            .collect();
-        let starts: Vec<State> = ins.iter().map(|x| x.0).collect();
-        let unit = |j: usize| {
-            let mut z = [0.0; 5];
-            z[j] = 1.0;
-            TangentVector::from_array(z)
-        };
-        let frames: Vec<(State, [TangentVector; 5])> = ins
-            .iter()
-            .map(|x| (x.0, std::array::from_fn(unit)))
-            .collect();
-        let plain = Plain { collisions: 500 };
-        assert_eq!(
-            run_chunks::<_, _, Wide<f64, 3>, _>(Baseline, &g, &l, &plain, &starts),
-            run_chunks::<_, _, f64, _>(Baseline, &g, &l, &plain, &starts)
-        );
-        let fd = FiniteDifference {
-            collisions: 500,
-            delta0: 1e-7,
-            scaled: [1e-7; 5],
-            inv_units: [1.0; 5],
-        };
-        assert_eq!(
-            run_chunks::<_, _, Wide<f64, 4>, _>(Baseline, &g, &l, &fd, &ins),
-            run_chunks::<_, _, f64, _>(Baseline, &g, &l, &fd, &ins)
-        );
-        let tangent = Tangent {
-            collisions: 500,
-            units: Units::new(&table, &ins[0].0, &law),
-        };
-        assert_eq!(
-            run_chunks::<_, _, Wide<f64, 4>, _>(Baseline, &g, &l, &tangent, &ins),
-            run_chunks::<_, _, f64, _>(Baseline, &g, &l, &tangent, &ins)
-        );
-        let spectrum = Spectrum {
-            collisions: 500,
-            qr_interval: 3,
-        };
-        assert_eq!(
-            run_chunks::<_, _, Wide<f64, 2>, _>(Baseline, &g, &l, &spectrum, &frames),
-            run_chunks::<_, _, f64, _>(Baseline, &g, &l, &spectrum, &frames)
-        );
-    }
-
-    /// Operations per collision step of each kernel, counted with a
-    /// one-lane counting type over 20 000 steps (α = 0.5): the stadium
-    /// `a = 1` and the Sinai table `L = 2, R = 1` built in, and the tables
-    /// built from segments of `lanes_speed` (stadium, mushroom, 20-gon). The
-    /// numbers behind the "floor" and the division tables of
-    /// docs/PERFORMANCE.md; run with `--nocapture` to see them.
-    #[test]
-    fn operation_counts_per_step() {
-        use spinball_geometry::Sinai;
-
-        use crate::geom::{LaneSegments, LaneSinai, segment_tables};
-
-        let law = SpinLaw::new(0.5).unwrap();
-        let l = Law::new(&law);
-        // [plain, fd, tangent, spectrum] × [div, sqrt] per step.
-        let stadium = Stadium::new(1.0).unwrap();
-        let c = counts("stadium", &stadium, &LaneStadium::new(1.0), &l, &law);
-        // One division per cast (the chosen fraction) and one square root
-        // (the cap's discriminant); the fallback of the circle contact never
-        // runs. Finite differences add the shadow's cast, its shell and
-        // δ0/δ with δ's square root; the tangent map adds 1/(n·v); the
-        // spectrum five 1/|v_i| and five |v_i| of Gram–Schmidt.
-        assert_eq!(c, [[1.0, 1.0], [4.0, 3.0], [2.0, 1.0], [7.0, 6.0]]);
-        let sinai = Sinai::new(2.0, 1.0).unwrap();
-        let c = counts("sinai", &sinai, &LaneSinai::new(2.0, 1.0), &l, &law);
-        assert_eq!(c, [[1.0, 1.0], [4.0, 3.0], [2.0, 1.0], [7.0, 6.0]]);
-
-        let seg_stadium = segment_tables::stadium(1.0);
-        let ls = LaneSegments::new(&seg_stadium);
-        let c = counts("seg-stadium", &seg_stadium, &ls.view::<true>(), &l, &law);
-        // With arcs too, one division per cast (the chosen wall's fraction:
-        // every arc's denominator is |v|²) and a square root per arc; the
-        // fallback of the winning arc's contact never runs.
-        assert_eq!(c[0], [1.0, 2.0]);
-        let mushroom = segment_tables::mushroom(1.0, 0.3, 1.0);
-        let lm = LaneSegments::new(&mushroom);
-        let c = counts("mushroom", &mushroom, &lm.view::<true>(), &l, &law);
-        assert_eq!(c[0], [1.0, 1.0]);
-        let gon = segment_tables::alternating_twenty_gon();
-        let lg = LaneSegments::new(&gon);
-        let c = counts("20-gon", &gon, &lg.view::<false>(), &l, &law);
-        // Without arcs: one division per cast, however many walls.
-        assert_eq!(c[0], [1.0, 0.0]);
-    }
-
-    /// Runs the four kernels on `table` with the counting lane type and
-    /// prints every operation per step; returns divisions and square roots
-    /// per step of each, to 0.01.
-    fn counts<B: spinball_geometry::Boundary, G: Geom>(
-        name: &str,
-        table: &B,
-        g: &G,
-        l: &Law,
-        law: &SpinLaw,
-    ) -> [[f64; 2]; 4] {
-        use crate::lanes::counted::{Counted, take};
-        const N: u64 = 20_000;
-        let s = Sampler::Paper.initial_state(table, law, 1, 0);
-        let d = TangentVector::from_array([0.6, -0.2, 0.1, 0.7, 0.3]);
-        let unit = |j: usize| {
-            let mut z = [0.0; 5];
-            z[j] = 1.0;
-            TangentVector::from_array(z)
-        };
-        let names = [
-            "add/sub",
-            "mul",
-            "div",
-            "sqrt",
-            "cmp/max/abs",
-            "select",
-            "mask",
-            "bits",
-        ];
-        // Per trajectory: a kernel of several streams runs that many copies
-        // of the one state in a chunk.
-        let report = |kernel: &str, streams: usize| {
-            let c = take().map(|k| k / streams as u64);
-            let per: Vec<String> = names
-                .iter()
-                .zip(c)
-                .map(|(n, k)| format!("{n} {:.2}", k as f64 / N as f64))
-                .collect();
-            println!("{name:<12} {kernel:<9} per step: {}", per.join(", "));
-            // To 0.01 per step: the launch's and the end's few operations
-            // (1/|V|², the final norm) vanish.
-            let per_step = |k: u64| (k as f64 / N as f64 * 100.0).round() / 100.0;
-            [per_step(c[2]), per_step(c[3])]
-        };
-        take();
-        run_chunks::<_, _, Counted, _>(Baseline, g, l, &Plain { collisions: N }, &[s]);
-        let plain = report("plain", Plain::STREAMS);
-        let fd = FiniteDifference {
-            collisions: N,
-            delta0: 1e-7,
-            scaled: [1e-7; 5],
-            inv_units: [1.0; 5],
-        };
-        run_chunks::<_, _, Counted, _>(Baseline, g, l, &fd, &[(s, d)]);
-        let fd = report("fd", 1);
-        run_chunks::<_, _, Counted, _>(
-            Baseline,
-            g,
-            l,
-            &Tangent {
-                collisions: N,
-                units: Units::new(table, &s, law),
-            },
-            &[(s, d)],
-        );
-        let tangent = report("tangent", 1);
-        let spectrum = Spectrum {
-            collisions: N,
-            qr_interval: 1,
-        };
-        run_chunks::<_, _, Counted, _>(
-            Baseline,
-            g,
-            l,
-            &spectrum,
-            &[(s, std::array::from_fn(unit))],
-        );
-        let spectrum = report("spectrum", 1);
-        [plain, fd, tangent, spectrum]
-    }
-}
+mod tests;

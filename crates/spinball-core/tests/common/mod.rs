@@ -1,5 +1,7 @@
 //! Shared helpers for the core integration tests.
-#![allow(dead_code)]
+#![allow(dead_code, unused_imports)]
+
+pub use spinball_test_support::signed_distance;
 
 use spinball_core::{Ball, Billiard, Boundary, Collision, Sampler, SpinLaw, State};
 use spinball_geometry::{DVec2, Table};
@@ -24,19 +26,6 @@ pub fn paper_tables() -> Vec<Table> {
         .iter()
         .map(|s| s.parse().expect("valid spec"))
         .collect()
-}
-
-/// Signed distance to the boundary, positive inside (exact inside, a lower
-/// bound of the distance outside).
-pub fn signed_distance(table: &Table, p: DVec2) -> f64 {
-    match table {
-        Table::Circle(c) => c.radius() - p.length(),
-        Table::Rectangle(r) => (r.l() - p.x.abs()).min(r.h() - p.y.abs()),
-        Table::Stadium(s) => 1.0 - DVec2::new((p.x.abs() - s.a()).max(0.0), p.y).length(),
-        Table::Sinai(s) => (s.l() - p.x.abs())
-            .min(s.l() - p.y.abs())
-            .min(p.length() - s.r()),
-    }
 }
 
 /// A launched ball from initial condition `index` of `seed` (paper sampler).

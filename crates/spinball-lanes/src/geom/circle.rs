@@ -39,7 +39,8 @@ impl Geom for LaneCircle {
 
     #[inline(always)]
     fn search<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> CircleFound<L> {
-        let zero = L::splat(0.0);
+        let cpu = x.proof();
+        let zero = L::splat(cpu, 0.0);
         let ray = Ray::new(x, y, vx, vy);
         let root = concave_root::<L, true>(zero, zero, &self.round, &ray);
         CircleFound {
@@ -51,16 +52,17 @@ impl Geom for LaneCircle {
 
     #[inline(always)]
     fn land<L: Lanes>(&self, f: CircleFound<L>) -> LaneHit<L> {
-        let zero = L::splat(0.0);
+        let cpu = f.time.proof();
+        let zero = L::splat(cpu, 0.0);
         let (px, py, radx, rady) =
             contact_at::<L, false>(zero, zero, &f.root, &f.ray, f.time, &self.round, f.root.ok);
         LaneHit {
-            time: L::select(f.root.ok, f.time, L::splat(f64::NAN)),
+            time: L::select(f.root.ok, f.time, L::splat(cpu, f64::NAN)),
             px,
             py,
             nx: -radx,
             ny: -rady,
-            curvature: L::splat(self.k),
+            curvature: L::splat(cpu, self.k),
             wall: zero,
         }
     }

@@ -69,16 +69,16 @@ impl Flat {
     }
 
     #[inline(always)]
-    fn lanes<L: Lanes>(&self) -> FlatLanes<L> {
+    fn lanes<L: Lanes>(&self, cpu: L::Needs) -> FlatLanes<L> {
         FlatLanes {
-            id: L::splat(self.id),
-            sx: L::splat(self.sx),
-            sy: L::splat(self.sy),
-            dx: L::splat(self.dx),
-            dy: L::splat(self.dy),
-            nx: L::splat(self.nx),
-            ny: L::splat(self.ny),
-            hi: L::splat(self.hi),
+            id: L::splat(cpu, self.id),
+            sx: L::splat(cpu, self.sx),
+            sy: L::splat(cpu, self.sy),
+            dx: L::splat(cpu, self.dx),
+            dy: L::splat(cpu, self.dy),
+            nx: L::splat(cpu, self.nx),
+            ny: L::splat(cpu, self.ny),
+            hi: L::splat(cpu, self.hi),
         }
     }
 }
@@ -145,14 +145,14 @@ impl Axis {
     }
 
     #[inline(always)]
-    fn lanes<L: Lanes>(&self) -> AxisLanes<L> {
+    fn lanes<L: Lanes>(&self, cpu: L::Needs) -> AxisLanes<L> {
         AxisLanes {
-            id: L::splat(self.id),
-            sn: L::splat(self.sn),
-            st: L::splat(self.st),
-            d: L::splat(self.d),
-            n: L::splat(self.n),
-            hi: L::splat(self.hi),
+            id: L::splat(cpu, self.id),
+            sn: L::splat(cpu, self.sn),
+            st: L::splat(cpu, self.st),
+            d: L::splat(cpu, self.d),
+            n: L::splat(cpu, self.n),
+            hi: L::splat(cpu, self.hi),
         }
     }
 }
@@ -330,8 +330,9 @@ impl<L: Lanes> Across<L> {
     /// table's slack).
     #[inline(always)]
     fn new(dist: L, w: L, vd: L, lo: f64) -> Self {
-        let zero = L::splat(0.0);
-        let lo = L::splat(lo);
+        let cpu = dist.proof();
+        let zero = L::splat(cpu, 0.0);
+        let lo = L::splat(cpu, lo);
         // Moving into the wall, not behind it (a NaN distance is not
         // "behind").
         let ok = dist.test::<{ cmp::NLT }>(lo, w.gt(zero));
@@ -405,11 +406,12 @@ impl<L: Lanes> Earliest<L> {
 /// order (`lo`: minus the table's slack).
 #[inline(always)]
 pub(super) fn earliest<L: Lanes>(steps: &[Step], lo: f64, ray: &Ray<L>) -> Earliest<L> {
-    let zero = L::splat(0.0);
+    let cpu = ray.x.proof();
+    let zero = L::splat(cpu, 0.0);
     let (vx, vy) = (ray.vx, ray.vy);
     let mut best = Earliest {
-        dist: L::splat(f64::NAN),
-        speed: L::splat(1.0),
+        dist: L::splat(cpu, f64::NAN),
+        speed: L::splat(cpu, 1.0),
         id: zero,
     };
     // `−(v·n)` and `v·dir` of the last flat wall cast alone.
@@ -418,7 +420,7 @@ pub(super) fn earliest<L: Lanes>(steps: &[Step], lo: f64, ray: &Ray<L>) -> Earli
         let first = i == 0;
         match step {
             Step::One(f, shares) => {
-                let c = f.lanes::<L>();
+                let c = f.lanes::<L>(cpu);
                 if !shares {
                     w = vx * f.mnx + vy * f.mny;
                     vd = vx * c.dx + vy * c.dy;
@@ -434,7 +436,7 @@ pub(super) fn earliest<L: Lanes>(steps: &[Step], lo: f64, ray: &Ray<L>) -> Earli
                 // wall facing the ball (if any) has divisor `|w|`.
                 let wa = vx * a.mnx + vy * a.mny;
                 let faces_a = wa.gt(zero);
-                let (ca, cb) = (a.lanes::<L>(), b.lanes::<L>());
+                let (ca, cb) = (a.lanes::<L>(cpu), b.lanes::<L>(cpu));
                 let sel = |p: L, q: L| L::select(faces_a, p, q);
                 let c = FlatLanes {
                     id: sel(ca.id, cb.id),
@@ -454,9 +456,9 @@ pub(super) fn earliest<L: Lanes>(steps: &[Step], lo: f64, ray: &Ray<L>) -> Earli
             }
             Step::AxisOne(a, shares) => {
                 let r = AxisRay::new(ray, a.upright);
-                let c = a.lanes::<L>();
+                let c = a.lanes::<L>(cpu);
                 if !shares {
-                    w = r.vn * L::splat(a.mn);
+                    w = r.vn * L::splat(cpu, a.mn);
                     vd = r.vt * c.d;
                 }
                 let (ok, dist) = approach_axis(&c, w, vd, lo, &r);
@@ -467,9 +469,9 @@ pub(super) fn earliest<L: Lanes>(steps: &[Step], lo: f64, ray: &Ray<L>) -> Earli
             }
             Step::AxisLine(a, b, shares) => {
                 let r = AxisRay::new(ray, a.upright);
-                let (ca, cb) = (a.lanes::<L>(), b.lanes::<L>());
+                let (ca, cb) = (a.lanes::<L>(cpu), b.lanes::<L>(cpu));
                 if !shares {
-                    w = r.vn * L::splat(a.mn);
+                    w = r.vn * L::splat(cpu, a.mn);
                     vd = r.vt * ca.d;
                 }
                 // The second wall's `−(v·n)`, `v·dir` (its direction is
@@ -494,9 +496,9 @@ pub(super) fn earliest<L: Lanes>(steps: &[Step], lo: f64, ray: &Ray<L>) -> Earli
                 // As `Step::Pair`, in the frame of the pair's axis (both
                 // walls lie along it: their normals are opposite).
                 let r = AxisRay::new(ray, a.upright);
-                let wa = r.vn * L::splat(a.mn);
+                let wa = r.vn * L::splat(cpu, a.mn);
                 let faces_a = wa.gt(zero);
-                let (ca, cb) = (a.lanes::<L>(), b.lanes::<L>());
+                let (ca, cb) = (a.lanes::<L>(cpu), b.lanes::<L>(cpu));
                 let sel = |p: L, q: L| L::select(faces_a, p, q);
                 let c = AxisLanes {
                     id: sel(ca.id, cb.id),

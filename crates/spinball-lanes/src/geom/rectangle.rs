@@ -24,11 +24,12 @@ pub(super) struct BoxAhead<L: Lanes> {
 impl<L: Lanes> BoxAhead<L> {
     #[inline(always)]
     pub fn new(l: f64, h: f64, x: L, y: L, vx: L, vy: L) -> Self {
-        let zero = L::splat(0.0);
+        let cpu = x.proof();
+        let zero = L::splat(cpu, 0.0);
         let up = vy.gt(zero);
         let right = vx.gt(zero);
-        let dy = L::select(up, L::splat(h) - y, y + h).max(zero);
-        let dx = L::select(right, L::splat(l) - x, x + l).max(zero);
+        let dy = L::select(up, L::splat(cpu, h) - y, y + h).max(zero);
+        let dx = L::select(right, L::splat(cpu, l) - x, x + l).max(zero);
         let avy = vy.abs();
         let avx = vx.abs();
         let ty = dy * avx;
@@ -54,24 +55,33 @@ impl<L: Lanes> BoxAhead<L> {
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     pub fn land(&self, l: f64, h: f64, x: L, y: L, vx: L, vy: L, time: L) -> LaneHit<L> {
-        let zero = L::splat(0.0);
-        let one = L::splat(1.0);
+        let cpu = x.proof();
+        let zero = L::splat(cpu, 0.0);
+        let one = L::splat(cpu, 1.0);
         let (use_y, up, right) = (self.use_y, self.up, self.right);
         let ok = self.ok.and(time.is_finite());
         let time = time.max(zero);
         let px = (x + vx * time).clamp(-l, l);
         let py = (y + vy * time).clamp(-h, h);
         LaneHit {
-            time: L::select(ok, time, L::splat(f64::NAN)),
-            px: L::select(use_y, px, L::select(right, L::splat(l), L::splat(-l))),
-            py: L::select(use_y, L::select(up, L::splat(h), L::splat(-h)), py),
+            time: L::select(ok, time, L::splat(cpu, f64::NAN)),
+            px: L::select(
+                use_y,
+                px,
+                L::select(right, L::splat(cpu, l), L::splat(cpu, -l)),
+            ),
+            py: L::select(
+                use_y,
+                L::select(up, L::splat(cpu, h), L::splat(cpu, -h)),
+                py,
+            ),
             nx: L::select(use_y, zero, L::select(right, -one, one)),
             ny: L::select(use_y, L::select(up, -one, one), zero),
             curvature: zero,
             wall: L::select(
                 use_y,
-                L::select(up, L::splat(2.0), zero),
-                L::select(right, one, L::splat(3.0)),
+                L::select(up, L::splat(cpu, 2.0), zero),
+                L::select(right, one, L::splat(cpu, 3.0)),
             ),
         }
     }

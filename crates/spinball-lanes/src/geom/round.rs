@@ -27,6 +27,7 @@ pub(super) struct Ray<L: Lanes> {
 impl<L: Lanes> Ray<L> {
     #[inline(always)]
     pub fn new(x: L, y: L, vx: L, vy: L) -> Self {
+        let cpu = x.proof();
         let a = vx * vx + vy * vy;
         Ray {
             x,
@@ -34,7 +35,7 @@ impl<L: Lanes> Ray<L> {
             vx,
             vy,
             a,
-            inv_a: L::splat(1.0) / a,
+            inv_a: L::splat(cpu, 1.0) / a,
         }
     }
 
@@ -42,13 +43,14 @@ impl<L: Lanes> Ray<L> {
     /// chosen fraction's denominator instead.
     #[inline(always)]
     pub fn new_undivided(x: L, y: L, vx: L, vy: L) -> Self {
+        let cpu = x.proof();
         Ray {
             x,
             y,
             vx,
             vy,
             a: vx * vx + vy * vy,
-            inv_a: L::splat(0.0),
+            inv_a: L::splat(cpu, 0.0),
         }
     }
 
@@ -56,7 +58,8 @@ impl<L: Lanes> Ray<L> {
     /// at 0, unused.
     #[inline(always)]
     pub fn flat(x: L, y: L, vx: L, vy: L) -> Self {
-        let zero = L::splat(0.0);
+        let cpu = x.proof();
+        let zero = L::splat(cpu, 0.0);
         Ray {
             x,
             y,
@@ -112,17 +115,18 @@ pub(super) fn contact<L: Lanes, const UNIT: bool>(
     inv_r: L,
     care: L::Mask,
 ) -> (L, L, L, L) {
+    let cpu = rx.proof();
     let times = |x: L, f: L| if UNIT { x } else { x * f };
     let rr = if UNIT {
         rx * rx + ry * ry
     } else {
         (rx * rx + ry * ry) * (inv_r * inv_r)
     };
-    let near = (rr - 1.0).abs().lt(L::splat(1e-8));
-    let s = times(L::splat(1.5) - rr * 0.5, inv_r);
+    let near = (rr - 1.0).abs().lt(L::splat(cpu, 1e-8));
+    let s = times(L::splat(cpu, 1.5) - rr * 0.5, inv_r);
     let (mut nx, mut ny) = (rx * s, ry * s);
     if care.and(near.not()).any() {
-        let inv = L::splat(1.0) / (rx * rx + ry * ry).sqrt();
+        let inv = L::splat(cpu, 1.0) / (rx * rx + ry * ry).sqrt();
         nx = L::select(near, nx, rx * inv);
         ny = L::select(near, ny, ry * inv);
     }
@@ -155,7 +159,8 @@ pub(super) fn concave_root<L: Lanes, const ON_AXIS: bool>(
     k: &Round,
     ray: &Ray<L>,
 ) -> Root<L> {
-    let zero = L::splat(0.0);
+    let cpu = cx.proof();
+    let zero = L::splat(cpu, 0.0);
     let (vx, vy) = (ray.vx, ray.vy);
     let dx = ray.x - cx;
     let dy = if ON_AXIS { ray.y } else { ray.y - cy };
@@ -164,7 +169,7 @@ pub(super) fn concave_root<L: Lanes, const ON_AXIS: bool>(
     let c = (dx * dx + dy * dy) - k.r2;
     let disc = b * b - a * c;
     // On the circle to rounding: touch at once rather than miss.
-    let inside = c.le(L::splat(k.touch));
+    let inside = c.le(L::splat(cpu, k.touch));
     let disc = L::select(inside, disc.max(zero), disc);
     let ok = disc.test::<{ cmp::GE }>(zero, a.gt(zero));
     Root {
@@ -181,7 +186,8 @@ pub(super) fn concave_root<L: Lanes, const ON_AXIS: bool>(
 /// outside the circle moving towards it.
 #[inline(always)]
 pub(super) fn convex_root<L: Lanes>(cx: L, cy: L, k: &Round, ray: &Ray<L>) -> Root<L> {
-    let zero = L::splat(0.0);
+    let cpu = cx.proof();
+    let zero = L::splat(cpu, 0.0);
     let (vx, vy) = (ray.vx, ray.vy);
     let dx = ray.x - cx;
     let dy = ray.y - cy;
@@ -212,13 +218,14 @@ pub(super) fn contact_at<L: Lanes, const UNIT: bool>(
     k: &Round,
     care: L::Mask,
 ) -> (L, L, L, L) {
+    let cpu = time.proof();
     contact::<L, UNIT>(
         cx,
         cy,
         root.dx + ray.vx * time,
         root.dy + ray.vy * time,
-        L::splat(k.r),
-        L::splat(k.inv_r),
+        L::splat(cpu, k.r),
+        L::splat(cpu, k.inv_r),
         care,
     )
 }

@@ -47,7 +47,8 @@ impl Geom for LaneSinai {
 
     #[inline(always)]
     fn search<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> SinaiFound<L> {
-        let zero = L::splat(0.0);
+        let cpu = x.proof();
+        let zero = L::splat(cpu, 0.0);
         let walls = BoxAhead::new(self.l, self.l, x, y, vx, vy);
         let ray = Ray::new_undivided(x, y, vx, vy);
         let root = convex_root(zero, zero, &self.disk, &ray);
@@ -73,7 +74,8 @@ impl Geom for LaneSinai {
 
     #[inline(always)]
     fn land<L: Lanes>(&self, f: SinaiFound<L>) -> LaneHit<L> {
-        let zero = L::splat(0.0);
+        let cpu = f.time.proof();
+        let zero = L::splat(cpu, 0.0);
         let (r, time, disk_wins) = (&f.ray, f.time, f.disk_wins);
         let wall = f.walls.land(self.l, self.l, r.x, r.y, r.vx, r.vy, time);
         let (px, py, nx, ny) =
@@ -84,8 +86,8 @@ impl Geom for LaneSinai {
             py: L::select(disk_wins, py, wall.py),
             nx: L::select(disk_wins, nx, wall.nx),
             ny: L::select(disk_wins, ny, wall.ny),
-            curvature: L::select(disk_wins, L::splat(self.k), wall.curvature),
-            wall: L::select(disk_wins, L::splat(4.0), wall.wall),
+            curvature: L::select(disk_wins, L::splat(cpu, self.k), wall.curvature),
+            wall: L::select(disk_wins, L::splat(cpu, 4.0), wall.wall),
         }
     }
 }

@@ -62,13 +62,14 @@ impl Geom for LaneStadium {
 
     #[inline(always)]
     fn search<L: Lanes>(&self, x: L, y: L, vx: L, vy: L) -> StadiumFound<L> {
-        let zero = L::splat(0.0);
-        let one = L::splat(1.0);
+        let cpu = x.proof();
+        let zero = L::splat(cpu, 0.0);
+        let one = L::splat(cpu, 1.0);
         let a = self.a;
         // Crossing of y = +1 (moving up) or y = -1 ahead, tested without
         // dividing: |x_cross| <= a  <=>  |x |v_y| + v_x dist| <= a |v_y|.
         let up = vy.gt(zero);
-        let dist = L::select(up, L::splat(1.0) - y, y + 1.0).max(zero);
+        let dist = L::select(up, L::splat(cpu, 1.0) - y, y + 1.0).max(zero);
         let avy = vy.abs();
         let x_scaled = x * avy + vx * dist;
         let moving_y = vy.ne(zero);
@@ -76,7 +77,7 @@ impl Geom for LaneStadium {
         // Otherwise the cap on the side of the crossing (of v_x if v_y = 0).
         let side = L::select(moving_y, x_scaled, vx);
         let right = side.gt(zero);
-        let cx = L::select(right, L::splat(a), L::splat(-a));
+        let cx = L::select(right, L::splat(cpu, a), L::splat(cpu, -a));
         let ray = Ray::new_undivided(x, y, vx, vy);
         let root = concave_root::<L, true>(cx, zero, &self.cap, &ray);
         // One division: the flat wall's fraction or the cap's.
@@ -85,22 +86,23 @@ impl Geom for LaneStadium {
             ray,
             root,
             time,
-            hit_time: L::select(flat.or(root.ok), time, L::splat(f64::NAN)),
+            hit_time: L::select(flat.or(root.ok), time, L::splat(cpu, f64::NAN)),
             flat,
             cap: flat.not().and(root.ok),
             side_y: L::select(up, one, -one),
             cx,
             wall: L::select(
                 flat,
-                L::select(up, L::splat(2.0), zero),
-                L::select(right, one, L::splat(3.0)),
+                L::select(up, L::splat(cpu, 2.0), zero),
+                L::select(right, one, L::splat(cpu, 3.0)),
             ),
         }
     }
 
     #[inline(always)]
     fn land<L: Lanes>(&self, f: StadiumFound<L>) -> LaneHit<L> {
-        let zero = L::splat(0.0);
+        let cpu = f.time.proof();
+        let zero = L::splat(cpu, 0.0);
         let flat = f.flat;
         let flat_x = (f.ray.x + f.ray.vx * f.time).clamp(-self.a, self.a);
         let (cap_px, cap_py, radx, rady) =
@@ -112,7 +114,7 @@ impl Geom for LaneStadium {
             nx: L::select(flat, zero, -radx),
             // The inward normal of the wall at y = ±1 is ∓1 (negation is exact).
             ny: L::select(flat, -f.side_y, -rady),
-            curvature: L::select(flat, zero, L::splat(-1.0)),
+            curvature: L::select(flat, zero, L::splat(cpu, -1.0)),
             wall: f.wall,
         }
     }

@@ -111,10 +111,13 @@ impl Lanes for Counted {
     type Mask = CMask;
     type Bits = u64;
     type Needs = Baseline;
-    fn splat(x: f64) -> Self {
+    fn proof(self) -> Baseline {
+        Baseline
+    }
+    fn splat(_: Baseline, x: f64) -> Self {
         Counted(x)
     }
-    fn load(s: &[f64]) -> Self {
+    fn load(_: Baseline, s: &[f64]) -> Self {
         Counted(s[0])
     }
     fn store(self, s: &mut [f64]) {

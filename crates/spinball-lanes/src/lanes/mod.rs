@@ -30,12 +30,17 @@
 //! **Safety.** The SSE2, AVX2 and AVX-512 types call intrinsics, which is
 //! undefined behaviour on a CPU without the feature. Each type names the
 //! proof of the feature it needs ([`Lanes::Needs`], one of the zero-sized
-//! proofs of [`isa`](crate::isa)). The one function that runs kernels,
-//! [`run_chunks`](crate::kernels::run_chunks), takes a proof and requires
-//! that it proves the lane type's needs ([`ProvenBy`]), so the compiler
-//! checks that every kernel run uses lanes the detected level allows (for
-//! SSE2: lanes the target itself guarantees). That no other code makes SIMD
-//! lane values is the invariant stated on each type.
+//! proofs of [`isa`](crate::isa), which only detection makes), and the
+//! compiler checks that no value is made without it: the constructors
+//! ([`Lanes::splat`], [`Lanes::load`], [`BitsOps::splat`]) take the proof,
+//! every x86 lane, mask and bits value holds it (a zero-sized field private
+//! to the type's module), and every other operation makes its result from
+//! operands that hold one ([`Lanes::proof`] hands it on). So holding a lane
+//! value proves the CPU runs its instructions, in kernels and tests alike.
+//! The one function that runs kernels,
+//! [`run_chunks`](crate::kernels::run_chunks), takes a proof `C` and
+//! requires that it proves the lane type's needs ([`ProvenBy`]), which makes
+//! the proof the lanes are built with.
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -62,8 +67,10 @@ pub(crate) trait MaskOps: Copy + std::fmt::Debug {
 pub(crate) trait BitsOps: Copy {
     /// Number of lanes.
     const W: usize;
-    /// Every lane `x`.
-    fn splat(x: u64) -> Self;
+    /// The proof the constructor takes, as [`Lanes::Needs`].
+    type Needs: Copy;
+    /// Every lane `x`; `cpu` proves this CPU runs the type's instructions.
+    fn splat(cpu: Self::Needs, x: u64) -> Self;
     /// Wrapping addition.
     fn add(self, o: Self) -> Self;
     /// Wrapping subtraction.
@@ -92,18 +99,21 @@ pub(crate) trait Lanes:
     /// A comparison result.
     type Mask: MaskOps;
     /// `u64` lanes.
-    type Bits: BitsOps;
+    type Bits: BitsOps<Needs = Self::Needs>;
     /// The proof (a zero-sized type of [`isa`](crate::isa)) that the CPU can
     /// run this type's instructions: [`Baseline`] for
     /// `f64` and SSE2, [`Avx2Cpu`] and [`Avx512Cpu`] for the x86 vector
-    /// types. Kernels run only with a proof `C` such that
+    /// types. The constructors take it, so a value of the type exists only
+    /// where the proof did; kernels run only with a proof `C` such that
     /// `Needs: `[`ProvenBy`]`<C>`.
-    type Needs;
+    type Needs: Copy;
 
+    /// The proof this value was made with (zero-sized: free).
+    fn proof(self) -> Self::Needs;
     /// Every lane `x`.
-    fn splat(x: f64) -> Self;
+    fn splat(cpu: Self::Needs, x: f64) -> Self;
     /// Lanes from the first `N` elements of `s`.
-    fn load(s: &[f64]) -> Self;
+    fn load(cpu: Self::Needs, s: &[f64]) -> Self;
     /// Lanes into the first `N` elements of `s`.
     fn store(self, s: &mut [f64]);
     /// Correctly rounded square root.
@@ -188,13 +198,14 @@ pub(crate) trait Lanes:
     /// Lanes that are neither NaN nor infinite.
     #[inline(always)]
     fn is_finite(self) -> Self::Mask {
-        self.abs().lt(Self::splat(f64::INFINITY))
+        self.abs().lt(Self::splat(self.proof(), f64::INFINITY))
     }
     /// `f64::clamp`: NaN passes through.
     #[inline(always)]
     fn clamp(self, lo: f64, hi: f64) -> Self {
-        let x = Self::select(self.lt(Self::splat(lo)), Self::splat(lo), self);
-        Self::select(x.gt(Self::splat(hi)), Self::splat(hi), x)
+        let cpu = self.proof();
+        let x = Self::select(self.lt(Self::splat(cpu, lo)), Self::splat(cpu, lo), self);
+        Self::select(x.gt(Self::splat(cpu, hi)), Self::splat(cpu, hi), x)
     }
     /// Lane `i` (outside hot loops).
     #[inline(always)]
@@ -230,80 +241,206 @@ const EXP_SHIFT: u32 = 52;
 const MANTISSA: u64 = 0x000f_ffff_ffff_ffff;
 const ONE_BITS: u64 = 0x3ff0_0000_0000_0000;
 
-/// Operators of a lane type from its binary-operation closure (for the x86
-/// types; defined here, before their modules, so that they see it).
+/// The operations of an x86 lane type that have the same shape on every
+/// level, from the level's intrinsics: the operators, the `u64` lanes
+/// ([`BitsOps`]) and the [`Lanes`] methods that map to one intrinsic each
+/// (`splat`, `load`, `store`, `sqrt`, `max`, the exponent bit operations).
+/// What differs between the levels (negation, `abs`, the comparisons, blends,
+/// gathers and permutes) each file writes after `own`, inside the generated
+/// `impl Lanes`.
+///
+/// Every lane, mask and bits value is a register and the proof `$cpu` that
+/// this CPU runs the level (field `.1`, zero-sized): the constructors
+/// (`Lanes::splat`, `Lanes::load`, `BitsOps::splat`) take the proof, and every
+/// other operation makes its result from values that hold one. So a value
+/// exists only after the level was detected, which is what each `unsafe`
+/// intrinsic call below rests on, and the compiler checks it.
+///
+/// One intrinsic per operation, no loop, everything `#[inline(always)]`:
+/// the kernels inline it into the `#[target_feature]` entry points.
 #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-macro_rules! ops {
-    ($t:ty, $splat:path, |$a:ident, $b:ident| add: $add:expr, sub: $sub:expr, mul: $mul:expr, div: $div:expr, neg: $neg:expr) => {
-        impl ::std::ops::Add for $t {
+macro_rules! simd_lanes {
+    (@binop $t:ident, $tr:ident, $f:ident, $intr:ident) => {
+        impl ::std::ops::$tr for $t {
             type Output = $t;
             #[inline(always)]
-            fn add(self, o: $t) -> $t {
-                let ($a, $b) = (self, o);
-                $add
+            fn $f(self, o: $t) -> $t {
+                // SAFETY: `self.1` proves this CPU has the level's features.
+                $t(unsafe { $intr(self.0, o.0) }, self.1)
             }
         }
-        impl ::std::ops::Sub for $t {
+        impl ::std::ops::$tr<f64> for $t {
             type Output = $t;
             #[inline(always)]
-            fn sub(self, o: $t) -> $t {
-                let ($a, $b) = (self, o);
-                $sub
-            }
-        }
-        impl ::std::ops::Mul for $t {
-            type Output = $t;
-            #[inline(always)]
-            fn mul(self, o: $t) -> $t {
-                let ($a, $b) = (self, o);
-                $mul
-            }
-        }
-        impl ::std::ops::Div for $t {
-            type Output = $t;
-            #[inline(always)]
-            fn div(self, o: $t) -> $t {
-                let ($a, $b) = (self, o);
-                $div
-            }
-        }
-        impl ::std::ops::Neg for $t {
-            type Output = $t;
-            #[inline(always)]
-            fn neg(self) -> $t {
-                let $a = self;
-                $neg
-            }
-        }
-        impl ::std::ops::Add<f64> for $t {
-            type Output = $t;
-            #[inline(always)]
-            fn add(self, o: f64) -> $t {
-                self + $splat(o)
-            }
-        }
-        impl ::std::ops::Sub<f64> for $t {
-            type Output = $t;
-            #[inline(always)]
-            fn sub(self, o: f64) -> $t {
-                self - $splat(o)
-            }
-        }
-        impl ::std::ops::Mul<f64> for $t {
-            type Output = $t;
-            #[inline(always)]
-            fn mul(self, o: f64) -> $t {
-                self * $splat(o)
-            }
-        }
-        impl ::std::ops::Div<f64> for $t {
-            type Output = $t;
-            #[inline(always)]
-            fn div(self, o: f64) -> $t {
-                self / $splat(o)
+            fn $f(self, o: f64) -> $t {
+                ::std::ops::$tr::$f(self, <$t as $crate::lanes::Lanes>::splat(self.1, o))
             }
         }
     };
+    (
+        $t:ident, mask $m:ident, bits $b:ident, needs $cpu:ty, lanes $n:literal;
+        pd { set1: $set1:ident, loadu: $loadu:ident, storeu: $storeu:ident,
+             add: $add:ident, sub: $sub:ident, mul: $mul:ident, div: $div:ident,
+             sqrt: $sqrt:ident, max: $max:ident }
+        epi64 { set1: $iset1:ident, storeu: $istoreu:ident, add: $iadd:ident, sub: $isub:ident,
+                and: $iand:ident, or: $ior:ident, srli: $srli:ident, slli: $slli:ident,
+                shift: $shift:expr }
+        cast { to_bits: $to_bits:ident, to_pd: $to_pd:ident }
+        own { $($own:tt)* }
+    ) => {
+        simd_lanes!(@binop $t, Add, add, $add);
+        simd_lanes!(@binop $t, Sub, sub, $sub);
+        simd_lanes!(@binop $t, Mul, mul, $mul);
+        simd_lanes!(@binop $t, Div, div, $div);
+
+        impl $crate::lanes::BitsOps for $b {
+            const W: usize = $n;
+            type Needs = $cpu;
+            #[inline(always)]
+            fn splat(cpu: $cpu, x: u64) -> Self {
+                // SAFETY: `cpu` proves this CPU has the level's features.
+                $b(unsafe { $iset1(x as i64) }, cpu)
+            }
+            #[inline(always)]
+            fn add(self, o: Self) -> Self {
+                // SAFETY: `self.1` proves this CPU has the level's features.
+                $b(unsafe { $iadd(self.0, o.0) }, self.1)
+            }
+            #[inline(always)]
+            fn sub(self, o: Self) -> Self {
+                // SAFETY: `self.1` proves this CPU has the level's features.
+                $b(unsafe { $isub(self.0, o.0) }, self.1)
+            }
+            fn lane(self, i: usize) -> u64 {
+                let mut buf = [0u64; $n];
+                // SAFETY: `self.1` proves this CPU has the level's features;
+                // `buf` is `$n` `u64`s, one register, so the unaligned store
+                // writes only to it.
+                unsafe { $istoreu(buf.as_mut_ptr().cast(), self.0) };
+                buf[i]
+            }
+        }
+
+        impl $crate::lanes::Lanes for $t {
+            const N: usize = $n;
+            type Mask = $m;
+            type Bits = $b;
+            type Needs = $cpu;
+            #[inline(always)]
+            fn proof(self) -> $cpu {
+                self.1
+            }
+            #[inline(always)]
+            fn splat(cpu: $cpu, x: f64) -> Self {
+                // SAFETY: `cpu` proves this CPU has the level's features.
+                $t(unsafe { $set1(x) }, cpu)
+            }
+            #[inline(always)]
+            fn load(cpu: $cpu, s: &[f64]) -> Self {
+                let s = &s[..$n];
+                // SAFETY: `cpu` proves this CPU has the level's features;
+                // `s` was cut to `$n` elements, one register, so the
+                // unaligned load reads only from it.
+                $t(unsafe { $loadu(s.as_ptr()) }, cpu)
+            }
+            #[inline(always)]
+            fn store(self, s: &mut [f64]) {
+                let s = &mut s[..$n];
+                // SAFETY: `self.1` proves this CPU has the level's features;
+                // `s` was cut to `$n` elements, one register, so the
+                // unaligned store writes only to it.
+                unsafe { $storeu(s.as_mut_ptr(), self.0) }
+            }
+            #[inline(always)]
+            fn sqrt(self) -> Self {
+                // SAFETY: `self.1` proves this CPU has the level's features.
+                $t(unsafe { $sqrt(self.0) }, self.1)
+            }
+            #[inline(always)]
+            fn max(self, o: Self) -> Self {
+                // SAFETY: `self.1` proves this CPU has the level's features.
+                $t(unsafe { $max(self.0, o.0) }, self.1)
+            }
+            #[inline(always)]
+            fn exponent(self) -> $b {
+                // SAFETY: `self.1` proves this CPU has the level's features.
+                $b(unsafe { $srli::<{ $shift }>($to_bits(self.0)) }, self.1)
+            }
+            #[inline(always)]
+            fn mantissa(self) -> Self {
+                // SAFETY: `self.1` proves this CPU has the level's features.
+                let m = unsafe {
+                    $to_pd($ior(
+                        $iand($to_bits(self.0), $iset1($crate::lanes::MANTISSA as i64)),
+                        $iset1($crate::lanes::ONE_BITS as i64),
+                    ))
+                };
+                $t(m, self.1)
+            }
+            #[inline(always)]
+            fn pow2(e: $b) -> Self {
+                // SAFETY: `e.1` proves this CPU has the level's features.
+                $t(unsafe { $to_pd($slli::<{ $shift }>(e.0)) }, e.1)
+            }
+            $($own)*
+        }
+    };
+}
+
+/// The mask operations of a level whose comparisons give a vector register
+/// (all ones or all zeros per lane: SSE2 and AVX2), from its intrinsics.
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+macro_rules! vector_mask {
+    ($m:ident; and: $and:ident, or: $or:ident, xor: $xor:ident, ones: $ones:expr, movemask: $movemask:ident) => {
+        impl $crate::lanes::MaskOps for $m {
+            #[inline(always)]
+            fn and(self, o: Self) -> Self {
+                // SAFETY: `self.1` proves this CPU has the level's features.
+                $m(unsafe { $and(self.0, o.0) }, self.1)
+            }
+            #[inline(always)]
+            fn or(self, o: Self) -> Self {
+                // SAFETY: `self.1` proves this CPU has the level's features.
+                $m(unsafe { $or(self.0, o.0) }, self.1)
+            }
+            #[inline(always)]
+            fn not(self) -> Self {
+                // SAFETY: `self.1` proves this CPU has the level's features.
+                $m(unsafe { $xor(self.0, $ones) }, self.1)
+            }
+            #[inline(always)]
+            fn any(self) -> bool {
+                // SAFETY: `self.1` proves this CPU has the level's features.
+                unsafe { $movemask(self.0) != 0 }
+            }
+        }
+    };
+}
+
+/// The comparisons of a level with one compare intrinsic taking the
+/// predicate as a constant (AVX2's `vcmppd`, AVX-512's into a mask
+/// register): the six of [`Lanes`] and [`Lanes::compare`] (whose negated
+/// predicates `NLT`, `NLE` are then one instruction too). Expands to methods
+/// of an `impl Lanes`.
+#[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+macro_rules! predicate_compares {
+    ($m:ident, $cmp:ident) => {
+        predicate_compares!(@one $m, $cmp, lt = _CMP_LT_OQ, le = _CMP_LE_OQ, gt = _CMP_GT_OQ,
+            ge = _CMP_GE_OQ, eq = _CMP_EQ_OQ, ne = _CMP_NEQ_UQ);
+        #[inline(always)]
+        fn compare<const P: i32>(self, o: Self) -> $m {
+            // SAFETY: `self.1` proves this CPU has the level's features. `P`
+            // is one of `cmp`'s predicates, all valid.
+            $m(unsafe { $cmp::<P>(self.0, o.0) }, self.1)
+        }
+    };
+    (@one $m:ident, $cmp:ident, $($f:ident = $p:ident),*) => {$(
+        #[inline(always)]
+        fn $f(self, o: Self) -> $m {
+            // SAFETY: `self.1` proves this CPU has the level's features.
+            $m(unsafe { $cmp::<$p>(self.0, o.0) }, self.1)
+        }
+    )*};
 }
 
 mod palette;
@@ -418,7 +555,7 @@ mod tests {
 
     /// `L::lookup` reads, bit for bit, the entry [`Palette::get`] reads, for
     /// palettes of 8, 16 and 24 entries and every index in every lane.
-    fn lookup_reads_the_indexed_entry<L: Lanes>() {
+    fn lookup_reads_the_indexed_entry<L: Lanes>(cpu: L::Needs) {
         for walls in [1, 5, 8, 9, 13, 16, 17, 20] {
             // Distinct entries, a negative zero and a subnormal among them.
             let values: Vec<f64> = (0..walls)
@@ -435,7 +572,7 @@ mod tests {
                 // lane over the loop (5 is prime to every n).
                 let index: Vec<f64> = (0..L::N).map(|j| ((first + 5 * j) % n) as f64).collect();
                 let mut got = vec![0.0; L::N];
-                L::lookup(&p, L::load(&index)).store(&mut got);
+                L::lookup(&p, L::load(cpu, &index)).store(&mut got);
                 for (j, g) in got.iter().enumerate() {
                     assert_eq!(
                         g.to_bits(),
@@ -451,7 +588,7 @@ mod tests {
     /// `L::fetch` reads, bit for bit, what `L::lookup` reads from each
     /// column, for every index in every lane (and a NaN index); `row` reads
     /// what `Palette::get` reads.
-    fn fetch_reads_each_column<L: Lanes>() {
+    fn fetch_reads_each_column<L: Lanes>(cpu: L::Needs) {
         for walls in [1, 5, 8, 9, 16, 17] {
             let rows: Vec<[f64; 8]> = (0..walls)
                 .map(|i| {
@@ -478,7 +615,7 @@ mod tests {
                         assert_eq!(r.row(i)[c].to_bits(), r.column(c).get(i).to_bits());
                     }
                 }
-                let k = L::load(&index);
+                let k = L::load(cpu, &index);
                 let got = L::fetch(&r, k);
                 for (c, g) in got.iter().enumerate() {
                     let (mut a, mut b) = (vec![0.0; L::N], vec![0.0; L::N]);
@@ -497,17 +634,17 @@ mod tests {
 
     #[test]
     fn fetch_reads_each_column_on_every_level() {
-        fetch_reads_each_column::<f64>();
-        fetch_reads_each_column::<<Groups<1, 1, 1, 1> as PerIsa>::Baseline>();
-        fetch_reads_each_column::<<Groups<2, 2, 2, 2> as PerIsa>::Baseline>();
+        fetch_reads_each_column::<f64>(Baseline);
+        fetch_reads_each_column::<<Groups<1, 1, 1, 1> as PerIsa>::Baseline>(Baseline);
+        fetch_reads_each_column::<<Groups<2, 2, 2, 2> as PerIsa>::Baseline>(Baseline);
         #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
         {
-            if Avx2Cpu::detect().is_some() {
-                fetch_reads_each_column::<Avx2>();
-                fetch_reads_each_column::<Wide<Avx2, 2>>();
+            if let Some(cpu) = Avx2Cpu::detect() {
+                fetch_reads_each_column::<Avx2>(cpu);
+                fetch_reads_each_column::<Wide<Avx2, 2>>(cpu);
             }
-            if Avx512Cpu::detect().is_some() {
-                fetch_reads_each_column::<Avx512>();
+            if let Some(cpu) = Avx512Cpu::detect() {
+                fetch_reads_each_column::<Avx512>(cpu);
             }
         }
     }
@@ -517,14 +654,14 @@ mod tests {
     /// the baseline reads one lane at a time.
     #[test]
     fn lookup_reads_the_indexed_entry_on_every_level() {
-        lookup_reads_the_indexed_entry::<<Groups<1, 1, 1, 1> as PerIsa>::Baseline>();
+        lookup_reads_the_indexed_entry::<<Groups<1, 1, 1, 1> as PerIsa>::Baseline>(Baseline);
         #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
         {
-            if Avx2Cpu::detect().is_some() {
-                lookup_reads_the_indexed_entry::<Avx2>();
+            if let Some(cpu) = Avx2Cpu::detect() {
+                lookup_reads_the_indexed_entry::<Avx2>(cpu);
             }
-            if Avx512Cpu::detect().is_some() {
-                lookup_reads_the_indexed_entry::<Avx512>();
+            if let Some(cpu) = Avx512Cpu::detect() {
+                lookup_reads_the_indexed_entry::<Avx512>(cpu);
             }
         }
     }

@@ -35,8 +35,9 @@ impl MaskOps for bool {
 
 impl BitsOps for u64 {
     const W: usize = 1;
+    type Needs = Baseline;
     #[inline(always)]
-    fn splat(x: u64) -> u64 {
+    fn splat(_: Baseline, x: u64) -> u64 {
         x
     }
     #[inline(always)]
@@ -60,11 +61,15 @@ impl Lanes for f64 {
     type Bits = u64;
     type Needs = Baseline;
     #[inline(always)]
-    fn splat(x: f64) -> f64 {
+    fn proof(self) -> Baseline {
+        Baseline
+    }
+    #[inline(always)]
+    fn splat(_: Baseline, x: f64) -> f64 {
         x
     }
     #[inline(always)]
-    fn load(s: &[f64]) -> f64 {
+    fn load(_: Baseline, s: &[f64]) -> f64 {
         s[0]
     }
     #[inline(always)]
@@ -220,7 +225,7 @@ macro_rules! wide_binop {
             type Output = Self;
             #[inline(always)]
             fn $f(self, o: f64) -> Self {
-                let o = L::splat(o);
+                let o = L::splat(self.0[0].proof(), o);
                 Wide(each!(K, |i| $tr::$f(self.0[i], o)))
             }
         }
@@ -255,12 +260,16 @@ impl<L: Lanes, const K: usize> Lanes for Wide<L, K> {
     type Needs = L::Needs;
 
     #[inline(always)]
-    fn splat(x: f64) -> Self {
-        Wide([L::splat(x); K])
+    fn proof(self) -> L::Needs {
+        self.0[0].proof()
     }
     #[inline(always)]
-    fn load(s: &[f64]) -> Self {
-        Wide(each!(K, |i| L::load(&s[i * L::N..])))
+    fn splat(cpu: L::Needs, x: f64) -> Self {
+        Wide([L::splat(cpu, x); K])
+    }
+    #[inline(always)]
+    fn load(cpu: L::Needs, s: &[f64]) -> Self {
+        Wide(each!(K, |i| L::load(cpu, &s[i * L::N..])))
     }
     #[inline(always)]
     fn store(self, s: &mut [f64]) {
@@ -323,9 +332,10 @@ impl<L: Lanes, const K: usize> Lanes for Wide<L, K> {
 
 /// `u64` lanes of a [`Wide`] (lane `i` lives in register `i / L::N`).
 impl<B: BitsOps, const K: usize> BitsOps for Wide<B, K> {
+    type Needs = B::Needs;
     #[inline(always)]
-    fn splat(x: u64) -> Self {
-        Wide([B::splat(x); K])
+    fn splat(cpu: B::Needs, x: u64) -> Self {
+        Wide([B::splat(cpu, x); K])
     }
     #[inline(always)]
     fn add(self, o: Self) -> Self {
