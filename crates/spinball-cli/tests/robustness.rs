@@ -2,30 +2,17 @@
 //! issue 39: durations beyond what the clock counts, a full or closed
 //! stdout, and output paths that are devices, FIFOs, directories or links.
 
+mod common;
+use common::{BIN, scratch};
+
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 #[cfg(unix)]
 use std::os::unix::fs::{FileTypeExt, MetadataExt};
 
 use serde_json::Value;
-
-const BIN: &str = env!("CARGO_BIN_EXE_spinball");
-
-/// A fresh empty directory for one test.
-fn scratch(name: &str) -> PathBuf {
-    static N: AtomicUsize = AtomicUsize::new(0);
-    let dir = std::env::temp_dir().join(format!(
-        "spinball-robust-{}-{name}-{}",
-        std::process::id(),
-        N.fetch_add(1, Ordering::SeqCst)
-    ));
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 fn run(args: &[&str], stdout: Stdio) -> Output {
     Command::new(BIN)
