@@ -149,7 +149,7 @@ fn main() -> ExitCode {
             threads: args.threads,
         };
         let table = if spec.ends_with(".toml") || spec.ends_with(".json") {
-            TableFile::read(spec)?.build()?
+            TableFile::load(spec)?
         } else {
             Built::Table(spec.parse::<Table>()?)
         };

@@ -95,15 +95,53 @@ fn replaceable(path: &Path) -> Result<PathBuf, String> {
 }
 
 /// Check, before a run, that the output `path` given as `--flag` can be
-/// replaced: it does not exist, or it is a regular file (or a link to
-/// one).
+/// replaced whole (it is written through a temporary file renamed over
+/// it): it does not exist, or it is a regular file (or a link to one); and
+/// a new file can be made in its directory ([`check_creatable`]).
 ///
 /// # Errors
-/// [`CliError::Usage`] naming the flag and the path otherwise.
-pub fn check_replaceable(flag: &str, path: &Path) -> Result<(), CliError> {
-    replaceable(path)
-        .map(drop)
-        .map_err(|m| CliError::Usage(format!("--{flag} {m}")))
+/// [`CliError::Usage`] naming the flag, the path and what is wrong.
+pub fn check_writable(flag: &str, path: &Path) -> Result<(), CliError> {
+    replaceable(path).map_err(|m| CliError::Usage(format!("--{flag} {m}")))?;
+    check_creatable(flag, path)
+}
+
+/// Check, before a run, that the output `path` given as `--flag` can be
+/// written into: it exists (a file, or a device such as `/dev/stdout`,
+/// written as a shell redirect would), or its directory exists and takes a
+/// new file (a scratch file is made there and removed). A typo in a
+/// directory is found before the computation, not after it.
+///
+/// # Errors
+/// [`CliError::Usage`] naming the flag, the path and what is wrong.
+pub fn check_creatable(flag: &str, path: &Path) -> Result<(), CliError> {
+    if fs::metadata(path).is_ok() {
+        return Ok(());
+    }
+    let usage = |m: String| CliError::Usage(format!("--{flag} {}: {m}", path.display()));
+    let target = resolve(path).map_err(|e| usage(e.to_string()))?;
+    let dir = match target.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    if !dir.is_dir() {
+        return Err(usage(format!(
+            "the directory {} does not exist (create it first)",
+            dir.display()
+        )));
+    }
+    let mut probe = dir.join(".spinball-write-check");
+    probe
+        .as_mut_os_string()
+        .push(format!("-{}", std::process::id()));
+    match OpenOptions::new().write(true).create_new(true).open(&probe) {
+        Ok(_) => {
+            let _ = fs::remove_file(&probe);
+            Ok(())
+        }
+        Err(e) if e.kind() == io::ErrorKind::AlreadyExists => Ok(()),
+        Err(e) => Err(usage(format!("cannot write in {}: {e}", dir.display()))),
+    }
 }
 
 /// Replace the file at `path` (through links) by `bytes` atomically: a
@@ -189,9 +227,22 @@ mod tests {
         assert!(e.contains("is a directory"), "{e}");
         assert!(e.contains(&p.display().to_string()), "{e}");
         assert!(fs::metadata(&p).unwrap().is_dir());
-        let e = check_replaceable("json", &p).unwrap_err();
+        let e = check_writable("json", &p).unwrap_err();
         assert!(matches!(e, CliError::Usage(_)));
         assert!(e.to_string().starts_with("--json "), "{e}");
+    }
+
+    #[test]
+    fn a_missing_directory_is_found_before_the_run() {
+        let dir = scratch("missing");
+        check_writable("csv", &dir.join("new.csv")).unwrap();
+        // The scratch file of the check is gone.
+        assert_eq!(fs::read_dir(&dir).unwrap().count(), 0);
+        let typo = dir.join("reslts").join("x.csv");
+        let e = check_creatable("csv", &typo).unwrap_err().to_string();
+        assert!(e.starts_with("--csv "), "{e}");
+        assert!(e.contains("does not exist"), "{e}");
+        assert!(e.contains("reslts"), "{e}");
     }
 
     #[cfg(unix)]

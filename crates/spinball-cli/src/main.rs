@@ -63,6 +63,11 @@ enum Command {
     Table(TableArgs),
     /// Combine the partial results of a sharded run into the unsharded
     /// result (bitwise).
+    #[command(mut_arg("json", |a| a.help(
+        "Write the merged result as JSON (every statistic, the provenance and the \
+         per-initial-condition values), the file one unsharded run writes. It is \
+         replaced atomically, so it must be a regular file, a link to one, or a new path"
+    )))]
     Merge(MergeArgs),
     /// Write the SLURM job array (tables × α × shards) and merge job of a
     /// campaign.

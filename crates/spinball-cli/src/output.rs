@@ -7,12 +7,13 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use npyz::WriterBuilder;
+use spinball_analysis::estimators::PlusMinus;
 use spinball_analysis::report::csv_string;
 use spinball_analysis::run::LyapunovEstimate;
 
 use crate::documents::{ResultDocument, write_json};
 use crate::error::CliError;
-use crate::files::check_replaceable;
+use crate::files::{check_creatable, check_writable};
 use crate::stdout::print;
 
 /// Output options.
@@ -64,16 +65,23 @@ pub fn write_text(path: &Path, text: &str) -> Result<(), CliError> {
 }
 
 impl OutputArgs {
-    /// Check, before a run, that `--json` can be replaced (it is written
-    /// through a temporary file renamed over it).
+    /// Check, before a run, that every output can be written: `--json` can
+    /// be replaced (it is written through a temporary file renamed over
+    /// it), and `--csv` and `--npy` exist or can be made in their
+    /// directory.
     ///
     /// # Errors
-    /// [`CliError::Usage`] if it exists and is not a regular file.
+    /// [`CliError::Usage`] naming the flag and what is wrong.
     pub fn check(&self) -> Result<(), CliError> {
-        match &self.json {
-            Some(path) => check_replaceable("json", path),
-            None => Ok(()),
+        if let Some(path) = &self.json {
+            check_writable("json", path)?;
         }
+        for (flag, path) in [("csv", &self.csv), ("npy", &self.npy)] {
+            if let Some(path) = path {
+                check_creatable(flag, path)?;
+            }
+        }
+        Ok(())
     }
 
     /// Write finished estimates to every output asked for, and print a
@@ -100,14 +108,22 @@ impl OutputArgs {
         if self.quiet {
             Ok(())
         } else {
+            // λ with the digits its SEM shows; the median to λ's decimals.
             let mut table = format!(
-                "{:>10} {:>11} {:>10} {:>11} {:>7} {:>8} {:>9}\n",
-                "alpha", "lambda", "SEM", "median", "f_ch", "ICs", "time/s"
+                "{:>10} {:>24} {:>12} {:>7} {:>8} {:>9}\n",
+                "alpha", "lambda ± SEM", "median", "f_ch", "ICs", "time/s"
             );
             for e in estimates {
+                let lambda = PlusMinus::new(e.mean, e.sem);
+                let d = lambda.decimals().unwrap_or(6);
                 table.push_str(&format!(
-                    "{:>10} {:>11.6} {:>10.6} {:>11.6} {:>7.3} {:>8} {:>9.2}\n",
-                    e.alpha, e.mean, e.sem, e.median, e.chaotic_fraction, e.n_ics, e.wall_time_s
+                    "{:>10} {:>24} {:>12.d$} {:>7.3} {:>8} {:>9.2}\n",
+                    e.alpha,
+                    lambda.to_string(),
+                    e.median,
+                    e.chaotic_fraction,
+                    e.n_ics,
+                    e.wall_time_s
                 ));
             }
             print(&table)

@@ -17,9 +17,7 @@ pub fn read_table(arg: &str) -> Result<Built, CliError> {
         .extension()
         .is_some_and(|e| e == "toml" || e == "json");
     if is_file {
-        TableFile::read(arg)
-            .and_then(|f| f.build())
-            .map_err(CliError::usage)
+        TableFile::load(arg).map_err(CliError::usage)
     } else {
         arg.parse::<Table>().map(Built::Table).map_err(|e| {
             CliError::Usage(format!(

@@ -8,6 +8,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
+use spinball_analysis::estimators::PlusMinus;
 use spinball_analysis::run::{Control, RunEvent, RunObserver, TrajectoryStats};
 
 use crate::error::CliError;
@@ -46,6 +47,8 @@ pub struct Watch<'a> {
     stop: &'a AtomicBool,
     deadline: Option<Instant>,
     on_trajectories: &'a mut dyn FnMut(&[TrajectoryStats]) -> Result<(), CliError>,
+    /// Which of the command's α this run is, and of how many.
+    of: Option<(usize, usize)>,
     /// Why the run was stopped, if it was.
     pub stopped: Option<CliError>,
 }
@@ -64,8 +67,24 @@ impl<'a> Watch<'a> {
             stop,
             deadline,
             on_trajectories,
+            of: None,
             stopped: None,
         }
+    }
+
+    /// This run is α number `point` (from 0) of the command's `points`:
+    /// the bar shows `(point + 1)/points`, not the run's own `1/1`.
+    #[must_use]
+    pub fn of(mut self, point: usize, points: usize) -> Self {
+        self.of = Some((point, points));
+        self
+    }
+
+    /// The bar's prefix for α = `alpha`, point `point` of `points` of the
+    /// run (replaced by the command's count when [`of`](Self::of) gave one).
+    fn prefix(&self, alpha: f64, point: usize, points: usize) -> String {
+        let (k, n) = self.of.unwrap_or((point, points));
+        format!("α = {alpha} ({}/{n})", k + 1)
     }
 }
 
@@ -77,8 +96,7 @@ impl RunObserver for Watch<'_> {
                 points,
                 alpha,
             } => {
-                self.bar
-                    .set_prefix(format!("α = {alpha} ({}/{points})", point + 1));
+                self.bar.set_prefix(self.prefix(*alpha, *point, *points));
                 self.bar.set_position(0);
             }
             RunEvent::Trajectories(done) => {
@@ -91,7 +109,7 @@ impl RunObserver for Watch<'_> {
                 self.bar.set_length(p.ics_max);
                 self.bar.set_position(p.ics_done);
                 self.bar
-                    .set_message(format!("λ = {:.5} ± {:.5}", p.mean, p.sem));
+                    .set_message(format!("λ = {}", PlusMinus::new(p.mean, p.sem)));
             }
             _ => {}
         }
@@ -160,6 +178,25 @@ pub fn deadline(limit: Option<TimeLimit>) -> Option<Instant> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_bar_counts_the_commands_alphas() {
+        let bar = ProgressBar::hidden();
+        let stop = AtomicBool::new(false);
+        let mut keep = |_: &[TrajectoryStats]| Ok(());
+        let mut watch = Watch::new(&bar, &stop, None, &mut keep).of(1, 3);
+        // Each α runs alone (point 0 of 1): the bar says 2/3, not 1/1.
+        let started = RunEvent::Started {
+            point: 0,
+            points: 1,
+            alpha: 0.5,
+        };
+        assert_eq!(watch.observe(&started), Control::Continue);
+        assert_eq!(bar.prefix(), "α = 0.5 (2/3)");
+        let mut keep = |_: &[TrajectoryStats]| Ok(());
+        let alone = Watch::new(&bar, &stop, None, &mut keep);
+        assert_eq!(alone.prefix(0.5, 0, 1), "α = 0.5 (1/1)");
+    }
 
     #[test]
     fn time_limits() {

@@ -427,6 +427,35 @@ fn slurm_writes_an_array_and_a_merge_job() {
             .unwrap();
         assert!(status.success(), "{script} is not valid bash");
     }
+    let again = [
+        "slurm",
+        "--table",
+        "stadium:a=1",
+        "--alpha",
+        "0.5",
+        "--ics",
+        "4",
+        "--shards",
+        "2",
+        "--dir",
+        d.to_str().unwrap(),
+    ];
+    // A second campaign in the same directory is refused, and the first
+    // is kept, unless --force.
+    let out = spinball(&again);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("holds a campaign already") && err.contains("--force"),
+        "{err}"
+    );
+    assert_eq!(
+        std::fs::read_to_string(d.join("array.sbatch")).unwrap(),
+        array
+    );
+    ok(&[&again[..], &["--force"]].concat());
+    let replaced = std::fs::read_to_string(d.join("array.sbatch")).unwrap();
+    assert!(replaced.contains("#SBATCH --array=0-1"), "{replaced}");
     let out = spinball(&[
         "slurm",
         "--table",
@@ -437,6 +466,7 @@ fn slurm_writes_an_array_and_a_merge_job() {
         "4",
         "--shards",
         "5",
+        "--force",
         "--dir",
         d.to_str().unwrap(),
     ]);
@@ -488,4 +518,12 @@ fn spectrum_shards_merge_bitwise() {
     let out = spinball(&["merge", &parts[0], &parts[2]]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("missing"));
+}
+
+#[test]
+fn merge_help_says_what_its_json_is() {
+    let out = ok(&["merge", "--help"]);
+    let help = String::from_utf8_lossy(&out.stdout);
+    assert!(help.contains("Write the merged result as JSON"), "{help}");
+    assert!(!help.contains("A sharded run writes its partial"), "{help}");
 }

@@ -178,7 +178,7 @@ fn a_full_stdout_fails_every_command_with_exit_1() {
     let mut ftle = quick(&["--per-ic", s(&per_ic)]);
     ftle[0] = "ftle".into();
     full_stdout(&words(&ftle));
-    assert!(dir.join("per_ic.alpha-1.csv").exists());
+    assert!(dir.join("per_ic.alpha-0.5.csv").exists());
 
     let mut spectrum = quick(&[]);
     spectrum[0] = "spectrum".into();
@@ -450,4 +450,34 @@ fn a_link_to_a_regular_file_writes_the_file_and_stays_a_link() {
     );
     assert!(stderr(&out).contains("is a directory"), "{}", stderr(&out));
     assert!(fs::symlink_metadata(&to_dir).unwrap().is_symlink());
+}
+
+#[test]
+fn an_output_in_a_missing_directory_is_refused_before_the_run() {
+    let dir = scratch("missing-dir");
+    let nowhere = dir.join("no-such-dir");
+    // A billion ICs would take hours: the refusal comes first.
+    let long = |command: &str, more: &[&str]| {
+        let mut v = quick(more);
+        v[0] = command.into();
+        assert_eq!(v[5], "--ics");
+        v[6] = "1000000000".into();
+        v
+    };
+    for flag in ["--json", "--csv", "--npy"] {
+        let path = nowhere.join("r.out");
+        let out = expect(
+            &words(&long("lyapunov", &["--quiet", flag, s(&path)])),
+            2,
+            "does not exist",
+        );
+        assert!(stderr(&out).contains(flag), "{}", stderr(&out));
+    }
+    let per_ic = nowhere.join("x.csv");
+    expect(
+        &words(&long("ftle", &["--quiet", "--per-ic", s(&per_ic)])),
+        2,
+        "--per-ic",
+    );
+    assert!(!nowhere.exists());
 }

@@ -65,6 +65,13 @@ pub struct SegmentTable {
     slack: f64,
     /// The order in which the cast visits the flat walls.
     visits: Vec<FlatVisit>,
+    /// A name shown in outputs (a table file's `name`); not part of the
+    /// geometry.
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    name: Option<String>,
 }
 
 /// One step of the order in which [`SegmentTable`]'s cast visits its flat
@@ -284,6 +291,7 @@ impl SegmentTable {
             aabb,
             slack,
             visits,
+            name: None,
         })
     }
 
@@ -327,6 +335,22 @@ impl SegmentTable {
     #[must_use]
     pub fn walls(&self) -> &[Segment] {
         &self.walls
+    }
+
+    /// The same table under `name`, which outputs show (the spec string,
+    /// provenance, plot titles); the geometry and the table's identity in
+    /// results do not change.
+    #[must_use]
+    pub fn with_name(mut self, name: impl Into<String>) -> Self {
+        self.name = Some(name.into());
+        self
+    }
+
+    /// The table's name, if it was given one ([`with_name`](Self::with_name),
+    /// a table file's `name`).
+    #[must_use]
+    pub fn name(&self) -> Option<&str> {
+        self.name.as_deref()
     }
 
     /// The outer loop (counter-clockwise), as given to the constructor.
@@ -605,6 +629,7 @@ impl Boundary for SegmentTable {
         Some(Shape::Segments {
             outer: self.outer().to_vec(),
             holes: self.holes().into_iter().map(<[Segment]>::to_vec).collect(),
+            name: self.name.clone(),
         })
     }
 }

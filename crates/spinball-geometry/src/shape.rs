@@ -61,6 +61,12 @@ pub enum Shape {
         outer: Vec<Segment>,
         /// The holes.
         holes: Vec<Vec<Segment>>,
+        /// The table's name, if it has one (shown, not geometry).
+        #[cfg_attr(
+            feature = "serde",
+            serde(default, skip_serializing_if = "Option::is_none")
+        )]
+        name: Option<String>,
     },
 }
 
@@ -84,7 +90,7 @@ impl Shape {
             Shape::Circle { .. } => 1,
             Shape::Rectangle { .. } | Shape::Stadium { .. } => 4,
             Shape::Sinai { .. } => 5,
-            Shape::Segments { outer, holes } => {
+            Shape::Segments { outer, holes, .. } => {
                 outer.len() + holes.iter().map(Vec::len).sum::<usize>()
             }
         }
@@ -94,14 +100,17 @@ impl Shape {
 impl fmt::Display for Shape {
     /// The built-in tables as their spec string (`stadium:a=1`, which
     /// [`Table`](crate::Table) parses back); a segment table as
-    /// `segments(N walls)`.
+    /// `segments(N walls)`, or `NAME (segments, N walls)` if it has a name.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Shape::Circle { radius } => write!(f, "circle:R={radius}"),
             Shape::Rectangle { l, h } => write!(f, "rectangle:L={l},H={h}"),
             Shape::Stadium { a } => write!(f, "stadium:a={a}"),
             Shape::Sinai { l, r } => write!(f, "sinai:L={l},R={r}"),
-            Shape::Segments { .. } => write!(f, "segments({} walls)", self.walls()),
+            Shape::Segments {
+                name: Some(name), ..
+            } => write!(f, "{name} (segments, {} walls)", self.walls()),
+            Shape::Segments { name: None, .. } => write!(f, "segments({} walls)", self.walls()),
         }
     }
 }

@@ -277,8 +277,12 @@ impl Shape {
             Shape::Rectangle { l, h } => Built::Table(Rectangle::new(*l, *h)?.into()),
             Shape::Stadium { a } => Built::Table(Stadium::new(*a)?.into()),
             Shape::Sinai { l, r } => Built::Table(Sinai::new(*l, *r)?.into()),
-            Shape::Segments { outer, holes } => {
-                Built::Segments(SegmentTable::with_holes(outer.clone(), holes.clone())?)
+            Shape::Segments { outer, holes, name } => {
+                let table = SegmentTable::with_holes(outer.clone(), holes.clone())?;
+                Built::Segments(match name {
+                    Some(name) => table.with_name(name.clone()),
+                    None => table,
+                })
             }
         })
     }
@@ -357,7 +361,8 @@ impl Boundary for Built {
 }
 
 impl fmt::Display for Built {
-    /// The table's spec string, or `segments(N walls)`.
+    /// The table's spec string, or `segments(N walls)` (with its name
+    /// first if it has one: `mushroom (segments, 6 walls)`).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self.shape() {
             Some(shape) => shape.fmt(f),

@@ -127,6 +127,15 @@ pub enum TableFileError {
     /// The walls do not make a table.
     #[error("table file: {0}")]
     Geometry(#[from] GeometryError),
+    /// A file that was read describes no table ([`TableFile::load`]): which
+    /// file, and why.
+    #[error("{path}: {source}")]
+    InFile {
+        /// The file.
+        path: String,
+        /// Why its description makes no table.
+        source: Box<TableFileError>,
+    },
 }
 
 fn point(p: [f64; 2]) -> DVec2 {
@@ -271,7 +280,27 @@ impl TableFile {
             }
             None => walls(&self.outer)?,
         };
-        Ok(Built::Segments(SegmentTable::with_holes(outer, holes)?))
+        let table = SegmentTable::with_holes(outer, holes)?;
+        Ok(Built::Segments(match &self.name {
+            Some(name) => table.with_name(name.clone()),
+            None => table,
+        }))
+    }
+
+    /// Read a `.toml` or `.json` file and build its table; an error of the
+    /// description names the file.
+    ///
+    /// # Errors
+    /// As [`read`](Self::read); what [`build`](Self::build) refuses comes as
+    /// [`TableFileError::InFile`] with the file's path.
+    pub fn load(path: impl AsRef<Path>) -> Result<Built, TableFileError> {
+        let path = path.as_ref();
+        Self::read(path)?
+            .build()
+            .map_err(|e| TableFileError::InFile {
+                path: path.display().to_string(),
+                source: Box::new(e),
+            })
     }
 }
 
@@ -299,6 +328,41 @@ mod tests {
         let area = PI / 2.0 + 0.6;
         assert!((t.area() - area).abs() < 1e-12, "{}", t.area());
         assert!((t.curved_length() - PI).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_name_is_kept_and_shown_but_is_not_geometry() {
+        let named = TableFile::from_toml(MUSHROOM).unwrap().build().unwrap();
+        assert_eq!(named.to_string(), "mushroom (segments, 6 walls)");
+        let Built::Segments(table) = &named else {
+            panic!("a table of walls")
+        };
+        assert_eq!(table.name(), Some("mushroom"));
+        // Through the shape (what results carry) and back.
+        let shape = named.shape().unwrap();
+        assert_eq!(shape.to_string(), "mushroom (segments, 6 walls)");
+        assert_eq!(shape.build().unwrap(), named);
+        // Without the name: the same walls, the unnamed spec.
+        let unnamed = TableFile::from_toml(&MUSHROOM.replace("name = \"mushroom\"", ""))
+            .unwrap()
+            .build()
+            .unwrap();
+        assert_eq!(unnamed.to_string(), "segments(6 walls)");
+        assert_eq!(unnamed.shape().unwrap().walls(), shape.walls());
+    }
+
+    #[test]
+    fn a_loaded_file_that_makes_no_table_is_named_in_the_error() {
+        let dir = std::env::temp_dir().join(format!("spinball-table-file-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("open_triangle.toml");
+        std::fs::write(&path, "polygon = [[0,0],[1,0]]").unwrap();
+        let err = TableFile::load(&path).unwrap_err();
+        assert!(matches!(err, TableFileError::InFile { .. }), "{err:?}");
+        let text = err.to_string();
+        assert!(text.starts_with(&path.display().to_string()), "{text}");
+        assert!(text.contains("wall"), "{text}");
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]

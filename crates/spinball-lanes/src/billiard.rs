@@ -101,7 +101,7 @@ impl<B: Boundary> LaneBilliard<B> {
         let segments = match &shape {
             // The walls of a `SegmentTable` make a valid one again; loops
             // that do not (a hand-made shape) have no lane form.
-            Shape::Segments { outer, holes } => Some(LaneSegments::new(
+            Shape::Segments { outer, holes, .. } => Some(LaneSegments::new(
                 &SegmentTable::with_holes(outer.clone(), holes.clone())
                     .map_err(|_| LanesError::NoLaneForm)?,
             )),

@@ -59,6 +59,7 @@ fn _spinball(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<ftle::PyFtleDistribution>()?;
     m.add_class::<results::PyLyapunovResult>()?;
     m.add_class::<results::PySpectrumResult>()?;
+    m.add_function(wrap_pyfunction!(results::plus_minus, m)?)?;
     m.add_function(wrap_pyfunction!(runs::lyapunov, m)?)?;
     m.add_function(wrap_pyfunction!(runs::alpha_sweep, m)?)?;
     m.add_function(wrap_pyfunction!(runs::spectrum, m)?)?;

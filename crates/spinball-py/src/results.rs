@@ -12,6 +12,15 @@ use spinball_analysis::run::{LyapunovEstimate, Provenance, SpectrumEstimate};
 use crate::errors::{analysis, value_error};
 use crate::ftle::PyFtleDistribution;
 
+/// `value ± error` as text, the error to two significant digits and the
+/// value to the same decimal place (`plus_minus(0.0003124, 0.0000412)` is
+/// `'0.000312 ± 0.000041'`): how results print their error.
+#[pyfunction]
+#[must_use]
+pub fn plus_minus(value: f64, error: f64) -> String {
+    spinball_analysis::estimators::PlusMinus::new(value, error).to_string()
+}
+
 /// `value` as its serde JSON text (`indent` spaces, or compact).
 fn json<T: serde::Serialize>(value: &T, indent: Option<usize>) -> PyResult<String> {
     let out = match indent {

@@ -288,9 +288,7 @@ fn builtin_object(py: Python<'_>, t: Table) -> PyResult<Py<PyAny>> {
 /// (with the line and column) or walls that do not make a table.
 #[pyfunction]
 pub fn table_file(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Py<PyAny>> {
-    let built = TableFile::read(&path)
-        .and_then(|f| f.build())
-        .map_err(|e| value_error(e.to_string()))?;
+    let built = TableFile::load(&path).map_err(|e| value_error(e.to_string()))?;
     match built {
         Built::Table(t) => builtin_object(py, t),
         Built::Segments(t) => Ok(Py::new(py, segment_table(t))?.into_any()),

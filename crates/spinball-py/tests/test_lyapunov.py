@@ -87,7 +87,7 @@ def test_result_fields_arrays_and_json():
     p = r.provenance
     assert (p["alpha"], p["seed"], p["collisions_per_ic"], p["engine"], p["version"]) == (
         0.5, 4, 2000, "lanes", sb.__version__)
-    assert "λ = " in repr(r)
+    assert f"λ = {sb.plus_minus(r.mean, r.sem)} " in repr(r)
     f = r.ftle()
     assert np.array_equal(f.exponents, r.exponents) and f.median == r.median
 
@@ -137,7 +137,10 @@ def test_stop_rule_and_progress_events():
 
 def test_progress_true_prints_and_a_raising_callback_stops_the_run(capsys):
     sb.lyapunov("stadium:a=1", 0.5, ics=128, collisions=500, progress=True)
-    assert "done: λ =" in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert "done: λ =" in err
+    # Not a terminal (captured): one line per point, no carriage returns.
+    assert "\r" not in err and err.count("\n") == 1, repr(err)
 
     class Stop(Exception):
         pass
@@ -225,3 +228,10 @@ def test_ftle_distribution_statistics():
     # Thresholds 0.001, 0.002 count 0.005 as chaotic; 0.005 and above do not.
     assert list(band["fractions"]) == [0.8, 0.8, 0.6, 0.6, 0.6, 0.6]
     assert (band["min"], band["max"]) == (0.6, 0.8) and band["spread"] == pytest.approx(0.2)
+
+
+def test_values_print_with_the_digits_their_error_shows():
+    # Two significant digits of the error, the value to the same place.
+    assert sb.plus_minus(0.0003124, 0.0000412) == "0.000312 ± 0.000041"
+    assert sb.plus_minus(0.18654, 0.00381) == "0.1865 ± 0.0038"
+    assert sb.plus_minus(0.5, 0.0) == "0.5 ± 0"

@@ -17,7 +17,9 @@
 //!   [`CHAOS_THRESHOLD`] and over [`THRESHOLD_BAND`];
 //! - statistics computed one way everywhere: the mergeable
 //!   [`Accumulator`], the fixed-bin [`Histogram`], exact order statistics
-//!   ([`median`], [`quantile`], ...) and the least-squares [`LinearFit`].
+//!   ([`median`], [`quantile`], ...) and the least-squares [`LinearFit`];
+//! - [`PlusMinus`]: a value printed with its error to two significant
+//!   digits.
 //!
 //! # The largest exponent of one trajectory
 //!
@@ -112,6 +114,7 @@
 
 mod ftle;
 mod lyapunov;
+mod plus_minus;
 mod spectrum;
 mod stats;
 
@@ -119,6 +122,7 @@ pub use ftle::{CHAOS_THRESHOLD, ChaoticBand, ChaoticFraction, FtleDistribution, 
 pub use lyapunov::{
     HistoryPoint, Lyapunov, LyapunovOptions, Method, PAPER_DELTA0, largest_lyapunov,
 };
+pub use plus_minus::PlusMinus;
 pub(crate) use spectrum::random_frame;
 pub use spectrum::{Spectrum, SpectrumOptions, lyapunov_spectrum};
 pub use stats::{

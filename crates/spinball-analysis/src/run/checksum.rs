@@ -191,7 +191,7 @@ impl Fnv1a {
                 self.tag(3);
                 self.f64s(&[*l, *r]);
             }
-            Shape::Segments { outer, holes } => {
+            Shape::Segments { outer, holes, .. } => {
                 self.tag(4);
                 self.walls(outer);
                 self.u64(holes.len() as u64);

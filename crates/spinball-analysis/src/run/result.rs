@@ -11,7 +11,7 @@ use super::engine::Engine;
 use super::provenance::{Provenance, TableRecord};
 use super::trajectory::TrajectoryStats;
 use crate::error::AnalysisError;
-use crate::estimators::{Accumulator, FtleDistribution, Method};
+use crate::estimators::{Accumulator, FtleDistribution, Method, PlusMinus};
 
 /// Why an ensemble run stopped.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -348,13 +348,15 @@ impl LyapunovEstimate {
 }
 
 impl fmt::Display for LyapunovEstimate {
-    /// `λ = 0.1865 ± 0.0038 (median 0.19, f_ch 0.89) [stadium:a=1, α = 0.5, fd, paper, 200 ICs × 20000 collisions, 3.1 s]`
+    /// `λ = 0.1865 ± 0.0038 (median 0.1902, f_ch 0.890) [stadium:a=1, α = 0.5, fd, paper, 200 ICs × 20000 collisions, 3.10 s]`:
+    /// λ with its SEM to two significant digits ([`PlusMinus`]), the median
+    /// to λ's decimals.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let lambda = PlusMinus::new(self.mean, self.sem);
+        let d = lambda.decimals().unwrap_or(4);
         write!(
             f,
-            "λ = {:.4} ± {:.4} (median {:.4}, f_ch {:.3}) [{}, α = {}, {}, {}, {} ICs × {} collisions, {:.2} s]",
-            self.mean,
-            self.sem,
+            "λ = {lambda} (median {:.d$}, f_ch {:.3}) [{}, α = {}, {}, {}, {} ICs × {} collisions, {:.2} s]",
             self.median,
             self.chaotic_fraction,
             self.table,

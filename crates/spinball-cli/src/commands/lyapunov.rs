@@ -14,7 +14,7 @@ use spinball_geometry::Built;
 
 use crate::documents::{PartialDocument, write_json};
 use crate::error::CliError;
-use crate::files::{check_replaceable, remove_regular};
+use crate::files::{check_writable, remove_regular};
 use crate::output::OutputArgs;
 use crate::run_args::RunArgs;
 use crate::stdout::print;
@@ -99,7 +99,7 @@ pub fn run_ensembles(
     // or a directory before the run, not after it.
     out.check()?;
     if let Some(path) = &checkpoint {
-        check_replaceable("checkpoint", path)?;
+        check_writable("checkpoint", path)?;
     }
     let mut doc = if ck.resume {
         let path = checkpoint.as_ref().ok_or_else(|| {
@@ -135,7 +135,7 @@ pub fn run_ensembles(
                 }
                 Ok(())
             };
-            let mut watch = Watch::new(&bar, &stop, deadline, &mut keep);
+            let mut watch = Watch::new(&bar, &stop, deadline, &mut keep).of(i, ensembles.len());
             let result = ensemble.run_partial(resume, &mut watch);
             (result, watch.stopped)
         };

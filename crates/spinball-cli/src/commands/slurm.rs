@@ -27,9 +27,16 @@ pub struct SlurmArgs {
     #[arg(long, default_value_t = 4)]
     pub shards: u64,
     /// Directory for the scripts, the partial results, the logs and the
-    /// merged results (created).
+    /// merged results (created). One that exists and is not empty is
+    /// refused unless --force.
     #[arg(long)]
     pub dir: PathBuf,
+    /// Write the scripts into a --dir that is not empty (an earlier
+    /// campaign's scripts and campaign.json are replaced; its partial
+    /// results are kept, and a task resumes from one only if it is of the
+    /// same run).
+    #[arg(long)]
+    pub force: bool,
     /// SLURM partition.
     #[arg(long)]
     pub partition: Option<String>,
@@ -44,6 +51,29 @@ pub struct SlurmArgs {
     /// The `spinball` binary the jobs run (default: this one).
     #[arg(long)]
     pub spinball: Option<PathBuf>,
+}
+
+/// Refuse a `--dir` that exists and holds anything, unless `force`: a
+/// second campaign written over a first would mix their files silently.
+fn refuse_occupied(dir: &Path, force: bool) -> Result<(), CliError> {
+    if force {
+        return Ok(());
+    }
+    let Ok(mut entries) = fs::read_dir(dir) else {
+        return Ok(());
+    };
+    if entries.next().is_none() {
+        return Ok(());
+    }
+    let what = if dir.join("campaign.json").exists() {
+        "holds a campaign already (campaign.json)"
+    } else {
+        "is not empty"
+    };
+    Err(CliError::Usage(format!(
+        "--dir {} {what}: choose a new directory, or pass --force to write the scripts over it",
+        dir.display()
+    )))
 }
 
 /// What the campaign is, for the user and for scripts: which file holds
@@ -140,6 +170,7 @@ pub fn slurm(args: &SlurmArgs) -> Result<(), CliError> {
         Some(p) => p.clone(),
         None => std::env::current_exe().map_err(CliError::failed)?,
     };
+    refuse_occupied(&args.dir, args.force)?;
     fs::create_dir_all(args.dir.join("parts"))
         .and_then(|()| fs::create_dir_all(args.dir.join("logs")))
         .and_then(|()| fs::create_dir_all(args.dir.join("results")))

@@ -40,7 +40,7 @@ use spinball_geometry::Table;
 
 use crate::error::CliError;
 
-use crate::files::{check_replaceable, write_atomic};
+use crate::files::{check_writable, write_atomic};
 use crate::stdout::print;
 
 /// Initial conditions each point's bias estimate is fitted on.
@@ -143,7 +143,7 @@ pub fn sweep(args: &SweepArgs) -> Result<(), CliError> {
     let laws = args.laws()?;
     let mut doc = SweepDocument::new(&args.table, args.method, args.sampler, args.seed);
     // Fail on an unwritable path now, not after the computation.
-    check_replaceable("--json", &args.json)?;
+    check_writable("json", &args.json)?;
     write_document(&args.json, &doc).map_err(|e| CliError::Usage(format!("--json: {e}")))?;
     // The rows on stdout; the document is written whatever becomes of
     // them (a full or closed stdout is reported after the run).

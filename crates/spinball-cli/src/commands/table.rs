@@ -12,7 +12,7 @@ use spinball_plot::{Plot, TablePlot};
 
 use crate::documents::write_json;
 use crate::error::CliError;
-use crate::files::check_replaceable;
+use crate::files::check_writable;
 use crate::stdout::print;
 use crate::table_arg::read_table;
 
@@ -56,10 +56,10 @@ struct Description {
 pub fn table(args: &TableArgs) -> Result<(), CliError> {
     let table = read_table(&args.table)?;
     if let Some(path) = &args.json {
-        check_replaceable("json", path)?;
+        check_writable("json", path)?;
     }
     if let Some(path) = &args.png {
-        check_replaceable("png", path)?;
+        check_writable("png", path)?;
     }
     let shape = table.shape();
     let bb = table.aabb();

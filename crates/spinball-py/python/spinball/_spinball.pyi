@@ -93,6 +93,11 @@ class SegmentTable(Table):
     @property
     def holes(self) -> List[List[Union[Line, Arc]]]: ...
 
+def plus_minus(value: float, error: float) -> str:
+    """``value ± error``, the error to two significant digits and the value to
+    the same decimal place: ``plus_minus(0.0003124, 0.0000412)`` is
+    ``'0.000312 ± 0.000041'``."""
+
 def table(spec: str) -> Table:
     """The built-in table a spec string names (``"stadium:a=1"``)."""
 
