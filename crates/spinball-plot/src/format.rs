@@ -36,6 +36,21 @@ pub fn format_tick(v: f64) -> String {
     }
 }
 
+/// A tick that is zero up to the rounding of the tick arithmetic reads 0:
+/// `v` is taken as 0 when `|v| < 1e-9 · span`, with `span` the axis'
+/// length (plotters places a tick at `-2.22e-16` on an axis from -1 to 1).
+#[must_use]
+pub fn snap_tick(v: f64, span: f64) -> f64 {
+    if v.abs() < 1e-9 * span.abs() { 0.0 } else { v }
+}
+
+/// [`format_tick`] of a tick on an axis of length `span`, rounding noise
+/// shown as 0 ([`snap_tick`]).
+#[must_use]
+pub fn format_tick_on(v: f64, span: f64) -> String {
+    format_tick(snap_tick(v, span))
+}
+
 /// `n` in superscript digits (`−15` → `⁻¹⁵`).
 pub(crate) fn superscript(n: i32) -> String {
     const DIGITS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
@@ -64,5 +79,15 @@ mod tests {
         assert_eq!(format_tick(1e6), "10⁶");
         assert_eq!(format_tick(2.5e6), "2.5×10⁶");
         assert_eq!(format_tick(f64::NAN), "");
+    }
+
+    #[test]
+    fn rounding_noise_on_an_axis_reads_zero() {
+        assert_eq!(format_tick(-2.220446049250313e-16), "-2.22×10⁻¹⁶");
+        assert_eq!(format_tick_on(-2.220446049250313e-16, 2.0), "0");
+        assert_eq!(format_tick_on(5.551115123125783e-17, 0.8), "0");
+        // A real small tick on a small axis stays.
+        assert_eq!(format_tick_on(1e-15, 4e-15), "10⁻¹⁵");
+        assert_eq!(format_tick_on(0.25, 2.0), "0.25");
     }
 }

@@ -6,7 +6,7 @@ use plotters::prelude::*;
 use crate::colormap::viridis;
 use crate::error::PlotError;
 use crate::font;
-use crate::format::format_tick;
+use crate::format::format_tick_on;
 use crate::histogram::HistogramPlot;
 use crate::lines::LinePlot;
 use crate::phase_plot::{MapPlot, Scatter3d};
@@ -145,7 +145,7 @@ impl Colorbar {
             .margin_bottom(style.margin / 2)
             .x_label_area_size((style.tick_px * 1.6 + style.label_px * 1.8).round() as u32)
             .build_cartesian_2d(self.min..self.max, 0.0..1.0)?;
-        let fmt = |v: &f64| format_tick(*v);
+        let fmt = |v: &f64| format_tick_on(*v, self.max - self.min);
         chart
             .configure_mesh()
             .disable_mesh()

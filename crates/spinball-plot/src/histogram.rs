@@ -7,7 +7,7 @@ use plotters::prelude::*;
 use crate::colormap::palette;
 use crate::error::PlotError;
 use crate::font;
-use crate::format::format_tick;
+use crate::format::format_tick_on;
 use crate::lines::{
     Legend, LineKind, axis_tick, dash, legend_glyph, legend_width, log_label_count, pad,
 };
@@ -239,7 +239,6 @@ impl Plot for HistogramPlot {
             .y_label
             .clone()
             .unwrap_or_else(|| default_y.to_string());
-        let fmt = |v: &f64| format_tick(*v);
         let bar = self.color.unwrap_or_else(|| palette(0));
         let width = (hi - lo) / heights.len() as f64;
         let xs = (lo, hi);
@@ -262,6 +261,7 @@ impl Plot for HistogramPlot {
             (0.0, top * 1.08, |h| h)
         };
         let mut chart = builder.build_cartesian_2d(x_range.0..x_range.1, y0..y1)?;
+        let fmt = |v: &f64| format_tick_on(*v, x_range.1 - x_range.0);
         let fmt_y = |v: &f64| axis_tick(*v, self.log_y);
         chart
             .configure_mesh()

@@ -72,7 +72,7 @@ mod table_plot;
 
 pub use colormap::{PALETTE, palette, viridis};
 pub use error::PlotError;
-pub use format::format_tick;
+pub use format::{format_tick, format_tick_on, snap_tick};
 pub use grid::{Colorbar, Grid, Panel};
 pub use histogram::{HistogramPlot, Marker};
 pub use lines::{Legend, LineKind, LinePlot, Series};

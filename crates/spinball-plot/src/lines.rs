@@ -9,7 +9,7 @@ use plotters::prelude::*;
 use crate::colormap::palette;
 use crate::error::PlotError;
 use crate::font;
-use crate::format::{format_tick, superscript};
+use crate::format::{format_tick, snap_tick, superscript};
 use crate::plot::{Plot, inner_size, titled};
 use crate::style::Style;
 
@@ -379,13 +379,12 @@ impl LinePlot {
     ) -> Result<(), PlotError> {
         // A tick that is zero up to the rounding of the tick arithmetic
         // (5.55e-17 on an axis from -0.4 to 0.4) reads 0.
-        let snap = |v: f64, span: f64| if v.abs() < 1e-9 * span { 0.0 } else { v };
         let (sx, sy) = (
             (self.tx(x1) - self.tx(x0)).abs(),
             (self.ty(y1) - self.ty(y0)).abs(),
         );
-        let fmt_x = |v: &f64| axis_tick(snap(*v, sx), self.log_x);
-        let fmt_y = |v: &f64| axis_tick(snap(*v, sy), self.log_y);
+        let fmt_x = |v: &f64| axis_tick(snap_tick(*v, sx), self.log_x);
+        let fmt_y = |v: &f64| axis_tick(snap_tick(*v, sy), self.log_y);
         chart
             .configure_mesh()
             .x_desc(self.x_label.clone().unwrap_or_default())

@@ -8,7 +8,7 @@ use plotters::prelude::*;
 use crate::colormap::viridis;
 use crate::error::PlotError;
 use crate::font;
-use crate::format::format_tick;
+use crate::format::format_tick_on;
 use crate::plot::{Plot, inner_size, titled};
 use crate::style::Style;
 
@@ -174,7 +174,8 @@ impl Plot for MapPlot {
             .x_label_area_size(bottom)
             .y_label_area_size(left)
             .build_cartesian_2d(x0..x1, y0..y1)?;
-        let fmt = |v: &f64| format_tick(*v);
+        let fmt_x = |v: &f64| format_tick_on(*v, x1 - x0);
+        let fmt_y = |v: &f64| format_tick_on(*v, y1 - y0);
         chart
             .configure_mesh()
             .disable_mesh()
@@ -182,8 +183,8 @@ impl Plot for MapPlot {
             .y_desc(self.y_label.clone())
             .label_style((font::FAMILY, style.tick_px).into_font())
             .axis_desc_style((font::FAMILY, style.label_px).into_font())
-            .x_label_formatter(&fmt)
-            .y_label_formatter(&fmt)
+            .x_label_formatter(&fmt_x)
+            .y_label_formatter(&fmt_y)
             .x_labels(7)
             .y_labels(5)
             .draw()?;

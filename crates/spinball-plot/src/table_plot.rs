@@ -7,7 +7,7 @@ use plotters::prelude::*;
 use crate::colormap::viridis;
 use crate::error::PlotError;
 use crate::font;
-use crate::format::format_tick;
+use crate::format::format_tick_on;
 use crate::outline::{Outline, ToOutline};
 use crate::plot::{Plot, inner_size, titled};
 use crate::style::Style;
@@ -139,8 +139,8 @@ impl Plot for TablePlot {
                 .y_desc("y")
                 .label_style(tick)
                 .axis_desc_style((font::FAMILY, style.label_px).into_font())
-                .x_label_formatter(&|v| format_tick(*v))
-                .y_label_formatter(&|v| format_tick(*v))
+                .x_label_formatter(&|v| format_tick_on(*v, 2.0 * half.x))
+                .y_label_formatter(&|v| format_tick_on(*v, 2.0 * half.y))
                 .axis_style(BLACK.stroke_width(1))
                 .draw()?;
         }

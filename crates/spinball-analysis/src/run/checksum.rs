@@ -12,6 +12,10 @@
 //!
 //! Documented in the group docs (`run/mod.rs`), section "Checksums".
 
+// Without `serde` no file is written or read: only the table identity
+// uses the hash, and the content encoders rest unused.
+#![cfg_attr(not(feature = "serde"), allow(dead_code))]
+
 use spinball_core::Sampler;
 use spinball_geometry::{Segment, Shape};
 use thiserror::Error;

@@ -9,7 +9,9 @@ use std::{ops::Range, time::Instant};
 use spinball_geometry::Boundary;
 use thiserror::Error;
 
-use super::checksum::{Fnv1a, IntegrityError, finite};
+#[cfg(feature = "serde")]
+use super::checksum::Fnv1a;
+use super::checksum::{IntegrityError, finite};
 use super::driver::{Point, RunObserver};
 use super::ensemble::Ensemble;
 use super::provenance::{Provenance, RunDifference};
@@ -79,6 +81,7 @@ impl PartialRun {
     }
 
     /// The checksum of the content (written and checked with the JSON).
+    #[cfg(feature = "serde")]
     fn checksum(&self) -> Fnv1a {
         let mut h = Fnv1a::new("spinball.partial_run");
         h.provenance(&self.provenance);

@@ -9,7 +9,9 @@ use spinball_core::{Billiard, Sampler, ic_rng};
 use spinball_geometry::Boundary;
 use spinball_lanes::{CHUNK, LaneBilliard, LanesError};
 
-use super::checksum::{Fnv1a, IntegrityError, finite};
+#[cfg(feature = "serde")]
+use super::checksum::Fnv1a;
+use super::checksum::{IntegrityError, finite};
 use super::parallel::{Threads, map_chunks, map_indices};
 use super::result::in_order;
 use crate::error::AnalysisError;
@@ -142,6 +144,7 @@ impl SpectrumEstimate {
     }
 
     /// The checksum of the content (written and checked with the JSON).
+    #[cfg(feature = "serde")]
     fn checksum(&self) -> Fnv1a {
         let mut h = Fnv1a::new("spinball.spectrum_estimate");
         h.f64s(&self.mean);

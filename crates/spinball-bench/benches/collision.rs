@@ -1,7 +1,7 @@
 #![allow(missing_docs)] // criterion_group! generates undocumented functions
 //! Cost of one collision step per table, and of one exact-tangent step.
 //!
-//! `cargo bench --bench collision`. Each iteration advances one ball by one
+//! `cargo bench -p spinball-bench --bench collision`. Each iteration advances one ball by one
 //! collision (cast + spin law + energy-shell restore); the ball keeps going
 //! from where it stopped, so the bench samples the table's natural mix of
 //! walls.

@@ -2,7 +2,7 @@
 //! Cost of the analysis kernels per trajectory step (one collision of the
 //! reference trajectory with everything the method carries along).
 //!
-//! `cargo bench --bench analysis --features rayon`. Each benchmark runs an
+//! `cargo bench -p spinball-bench --bench analysis`. Each benchmark runs an
 //! ensemble of the stadium (a = 1, α = 0.5) and reports throughput in
 //! IC-steps per second; criterion's "time" divided by the element count is
 //! the cost of one step:
