@@ -237,7 +237,7 @@ mod tests {
         );
         assert_eq!(inv.unit_multiplier, -1.0);
         assert!(
-            matches!(inv.class, StabilityClass::Hyperbolic { multiplier } if multiplier == -3.0)
+            matches!(inv.class, StabilityClass::Hyperbolic { multiplier } if (multiplier + 3.0).abs() < 1e-15)
         );
         let flip = Stability::classify(rotation(std::f64::consts::PI), DEFAULT_CLASS_TOLERANCE);
         assert_eq!(flip.class, StabilityClass::Parabolic { sign: -1 });
