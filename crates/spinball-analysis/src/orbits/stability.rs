@@ -144,7 +144,8 @@ impl Stability {
         let d = if r == 0.0 { 1.0 } else { c3 / r };
         let disc = t * t - 4.0 * d;
         let pair = if disc >= 0.0 {
-            let q = -0.5 * (-t + t.signum() * disc.sqrt());
+            // The root of larger modulus without cancellation, then D over it.
+            let q = 0.5 * (t + t.signum() * disc.sqrt());
             let (a, b) = if q == 0.0 { (0.0, 0.0) } else { (q, d / q) };
             let big = if a.abs() >= b.abs() { a } else { b };
             let small = if a.abs() >= b.abs() { b } else { a };
