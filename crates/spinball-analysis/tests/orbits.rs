@@ -247,6 +247,10 @@ fn stability_changes_where_the_closed_form_says() {
         assert!(matches!(up.before, StabilityClass::Hyperbolic { .. }));
         assert!(up.after.is_elliptic());
         assert_eq!(c.orbits.len(), alphas.len());
+        // T + 2 = 4(α − 1)(α − 1 − l/R)/(1+α)²: parabolic at α = 1 itself.
+        let down = c.changes.iter().find(|ch| ch.crossing == -2.0).unwrap();
+        assert_eq!((down.alpha, down.error), (1.0, 0.0));
+        assert_eq!(c.changes.len(), 2);
     }
     // Stadium long axis: T − 2 = 4(l² − 2l + α(2l − 4))/(1+α)² > 0: no change.
     for a in [1.0, 0.5] {

@@ -22,7 +22,9 @@ pub struct StabilityChange {
     pub alpha: f64,
     /// Half the width of the final bracket: the crossing lies within
     /// `alpha ± error` (for a continuous trace; the bracket's ends have
-    /// traces on either side of `crossing`).
+    /// traces on either side of `crossing`). Zero where the orbit is
+    /// parabolic at an α of the list itself (`|T ∓ 2|` within the class
+    /// tolerance there, as for the bouncing ball at α = 0 and α = 1).
     pub error: f64,
     /// `+2` or `−2`: which boundary of the elliptic band `|T| < 2` is crossed.
     pub crossing: f64,
@@ -61,7 +63,8 @@ pub fn orbit_at<B: Boundary>(
 /// Follow `orbit` through `alphas` (each Newton starts from the orbit at the
 /// previous α; a step that loses it is halved up to 20 times), then locate
 /// every change of stability between neighbours to `precision` in α by
-/// bisection on the sign of `T ∓ 2`.
+/// bisection on the sign of `T ∓ 2`; an α of the list where the orbit is
+/// parabolic is a change of its own (error 0).
 ///
 /// # Errors
 /// [`AnalysisError::InvalidOption`] for an empty list, a non-finite or
@@ -97,12 +100,38 @@ pub fn follow_in_alpha<B: Boundary>(
         orbits.push(current.clone());
     }
     let mut changes = Vec::new();
-    for pair in orbits.windows(2) {
-        for crossing in [2.0, -2.0] {
-            let side = |o: &PeriodicOrbit| (o.stability.pair_trace - crossing).signum();
-            if side(&pair[0]) != side(&pair[1]) {
+    for crossing in [2.0, -2.0] {
+        // −1, +1, or 0 where the orbit is parabolic at this crossing.
+        let side = |o: &PeriodicOrbit| {
+            let d = o.stability.pair_trace - crossing;
+            if d.abs() <= o.stability.tolerance {
+                0.0
+            } else {
+                d.signum()
+            }
+        };
+        let sides: Vec<f64> = orbits.iter().map(side).collect();
+        for i in 0..orbits.len() {
+            // Parabolic at an α of the list (and not just before): the
+            // change is there, to the class tolerance on T.
+            if sides[i] == 0.0 && (i == 0 || sides[i - 1] != 0.0) {
+                let class = |j: usize| orbits[j].stability.class;
+                changes.push(StabilityChange {
+                    alpha: orbits[i].alpha,
+                    error: 0.0,
+                    crossing,
+                    before: class(i.saturating_sub(1)),
+                    after: class((i + 1).min(orbits.len() - 1)),
+                });
+            }
+            if i + 1 < orbits.len() && sides[i] * sides[i + 1] < 0.0 {
                 changes.push(bisect(
-                    table, &pair[0], &pair[1], crossing, precision, options,
+                    table,
+                    &orbits[i],
+                    &orbits[i + 1],
+                    crossing,
+                    precision,
+                    options,
                 )?);
             }
         }

@@ -13,7 +13,9 @@
 //!   [`grid_seeds`], each once ([`SearchOptions`]);
 //! - [`Stability`]: monodromy, multipliers, [`StabilityClass`], Greene's
 //!   residue;
-//! - [`follow_in_alpha`]: continuation in α and the [`StabilityChange`]s.
+//! - [`follow_in_alpha`]: continuation in α and the [`StabilityChange`]s;
+//! - [`stability_diagram`]: every orbit of a period followed through a list
+//!   of α, with flat [`OrbitRow`]s for CSV and JSON.
 //!
 //! # The map
 //!
@@ -85,10 +87,20 @@
 //! neighbours where `T − 2` or `T + 2` changes sign, bisects in α until the
 //! bracket is at most twice the requested precision:
 //! [`StabilityChange::alpha`] is its middle and [`StabilityChange::error`]
-//! its half-width.
+//! its half-width. An α of the list where the orbit is parabolic (`T`
+//! within the class tolerance of ±2, as the bouncing ball at α = 0 and 1)
+//! is reported as a change there, with error 0.
+//!
+//! # Stability diagram
+//!
+//! [`stability_diagram`] finds the orbits at the first α of a list and
+//! follows each through the list: the trace or residue of every orbit
+//! against α, and the α of each change of stability. An orbit lost on the
+//! way (it meets a corner or turns grazing) is listed, not an error.
 
 mod birkhoff_map;
 mod continuation;
+mod diagram;
 mod finder;
 mod matrix;
 mod search;
@@ -96,6 +108,7 @@ mod stability;
 
 pub use birkhoff_map::BirkhoffPoint;
 pub use continuation::{Continuation, StabilityChange, follow_in_alpha, orbit_at};
+pub use diagram::{ORBIT_CSV_HEADER, OrbitRow, StabilityDiagram, stability_diagram};
 pub use finder::{NewtonOptions, PeriodicOrbit, find_orbit};
 pub use search::{SearchOptions, grid_seeds, normal_seeds, periodic_orbits};
 pub use stability::{DEFAULT_CLASS_TOLERANCE, Multiplier, Stability, StabilityClass};
