@@ -35,7 +35,7 @@ const ABOUT: &str =
     "Stability diagram of the period-2 orbits of the stadium, Sinai and a user table against α.";
 
 /// A flat wall at `x = −a` facing a unit half-circle cap centred at `x = a`.
-fn half_stadium(a: f64) -> Result<SegmentTable, Box<dyn std::error::Error>> {
+fn half_stadium(a: f64) -> Result<SegmentTable, Box<dyn std::error::Error + Send + Sync>> {
     let p = DVec2::new;
     let line = |a, b| LineSegment::new(a, b).map(Segment::Line);
     Ok(SegmentTable::new(vec![
@@ -50,7 +50,7 @@ fn diagram<B: Boundary>(
     table: &B,
     alphas: &[f64],
     samples: u32,
-) -> Result<StabilityDiagram, Box<dyn std::error::Error>> {
+) -> Result<StabilityDiagram, Box<dyn std::error::Error + Send + Sync>> {
     let search = SearchOptions {
         normal_samples: samples,
         ..SearchOptions::default()
@@ -90,7 +90,7 @@ fn main() -> ExitCode {
                 .title(label.to_string())
                 .x_label(ALPHA_LABEL)
                 .y_label("residue (2 − T)/4")
-                .y_range(-3.0, 2.0)
+                .y_range(-9.0, 2.0)
                 .hline(0.0, "")
                 .hline(1.0, "")
                 .legend(Legend::LowerRight);
@@ -99,7 +99,7 @@ fn main() -> ExitCode {
                 let points = b
                     .orbits
                     .iter()
-                    .map(|o| (o.alpha, o.stability.residue.clamp(-3.0, 2.0)));
+                    .map(|o| (o.alpha, o.stability.residue.clamp(-9.0, 2.0)));
                 plot = plot.series(
                     Series::new(format!("walls {}", walls.join("-")), points)
                         .color(palette(i))
