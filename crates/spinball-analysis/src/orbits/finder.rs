@@ -116,7 +116,7 @@ impl PeriodicOrbit {
     pub fn prime_period(&self, perimeter: f64, tolerance: f64) -> u32 {
         let p = self.points.len();
         (1..p)
-            .filter(|q| p % q == 0)
+            .filter(|&q| p.is_multiple_of(q))
             .find(|&q| {
                 (0..p).all(|i| {
                     let (a, b) = (self.points[i], self.points[(i + q) % p]);

@@ -7,11 +7,6 @@ pub(crate) type Mat3 = [[f64; 3]; 3];
 
 pub(crate) const IDENTITY: Mat3 = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 
-/// `a b`.
-pub(crate) fn mul(a: &Mat3, b: &Mat3) -> Mat3 {
-    std::array::from_fn(|r| std::array::from_fn(|c| (0..3).map(|k| a[r][k] * b[k][c]).sum()))
-}
-
 /// Trace, sum of the principal 2 × 2 minors, determinant: the coefficients
 /// of `λ³ − c₁λ² + c₂λ − c₃`.
 pub(crate) fn invariants(m: &Mat3) -> (f64, f64, f64) {
@@ -140,6 +135,5 @@ mod tests {
         assert_eq!((c1, c2, c3), (3.5, 3.5, 1.0));
         assert!((real_root_near(c1, c2, c3, 1.1) - 1.0).abs() < 1e-14);
         assert!((real_root_near(c1, c2, c3, 3.0) - 2.0).abs() < 1e-14);
-        assert_eq!(mul(&m, &IDENTITY), m);
     }
 }

@@ -108,25 +108,27 @@ pub fn normal_seeds<B: Boundary>(
             i = j + 1;
             continue;
         }
-        if let Some(Some((q2, walls2))) = scan.get(i + 1) {
-            if walls2 == walls && q2.abs() > zero && q.signum() != q2.signum() {
-                let (mut lo, mut hi) = ((i as f64 + 0.5) * ds, (i as f64 + 1.5) * ds);
-                let q_lo = *q;
-                for _ in 0..80 {
-                    let mid = 0.5 * (lo + hi);
-                    match probe(mid) {
-                        Some((qm, wm)) if wm == *walls => {
-                            if qm.signum() == q_lo.signum() {
-                                lo = mid;
-                            } else {
-                                hi = mid;
-                            }
+        if let Some(Some((q2, walls2))) = scan.get(i + 1)
+            && walls2 == walls
+            && q2.abs() > zero
+            && q.signum() != q2.signum()
+        {
+            let (mut lo, mut hi) = ((i as f64 + 0.5) * ds, (i as f64 + 1.5) * ds);
+            let q_lo = *q;
+            for _ in 0..80 {
+                let mid = 0.5 * (lo + hi);
+                match probe(mid) {
+                    Some((qm, wm)) if wm == *walls => {
+                        if qm.signum() == q_lo.signum() {
+                            lo = mid;
+                        } else {
+                            hi = mid;
                         }
-                        _ => break,
                     }
+                    _ => break,
                 }
-                seeds.push(BirkhoffPoint::normal(0.5 * (lo + hi)));
             }
+            seeds.push(BirkhoffPoint::normal(0.5 * (lo + hi)));
         }
         i += 1;
     }
