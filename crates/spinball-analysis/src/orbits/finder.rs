@@ -101,9 +101,7 @@ impl PeriodicOrbit {
             && (0..self.points.len()).any(|shift| {
                 self.points.iter().enumerate().all(|(i, a)| {
                     let b = other.points[(i + shift) % other.points.len()];
-                    wrap(a.s - b.s, perimeter).abs() <= tolerance
-                        && (a.v_par - b.v_par).abs() <= tolerance
-                        && (a.spin - b.spin).abs() <= tolerance
+                    close(a, &b, perimeter, tolerance)
                 })
             })
     }
@@ -119,14 +117,24 @@ impl PeriodicOrbit {
             .filter(|&q| p.is_multiple_of(q))
             .find(|&q| {
                 (0..p).all(|i| {
-                    let (a, b) = (self.points[i], self.points[(i + q) % p]);
-                    wrap(a.s - b.s, perimeter).abs() <= tolerance
-                        && (a.v_par - b.v_par).abs() <= tolerance
-                        && (a.spin - b.spin).abs() <= tolerance
+                    close(
+                        &self.points[i],
+                        &self.points[(i + q) % p],
+                        perimeter,
+                        tolerance,
+                    )
                 })
             })
             .map_or(self.period, |q| q as u32)
     }
+}
+
+/// Whether two points agree to `tolerance` in every coordinate (`s`
+/// modulo `perimeter`).
+fn close(a: &BirkhoffPoint, b: &BirkhoffPoint, perimeter: f64, tolerance: f64) -> bool {
+    wrap(a.s - b.s, perimeter).abs() <= tolerance
+        && (a.v_par - b.v_par).abs() <= tolerance
+        && (a.spin - b.spin).abs() <= tolerance
 }
 
 /// `d` wrapped into `[−P/2, P/2)`.

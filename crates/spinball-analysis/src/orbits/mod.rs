@@ -62,7 +62,7 @@
 //! member. A step that does not reduce the largest residual component is
 //! halved (up to 30 times). The orbit is closed when the residual is at
 //! most `tolerance` (1e-12 by default, `s` in units of the table's
-//! `unit_length`); if not, [`AnalysisError::NotClosed`] carries the
+//! `unit_length`); if not, [`AnalysisError::NotClosed`](crate::AnalysisError::NotClosed) carries the
 //! residual reached. An orbit with a near-grazing collision (`|v⊥|/|v|`
 //! below `min_cos`) is refused the same way: the map is not smooth there.
 //!
