@@ -80,6 +80,22 @@ pub enum AnalysisError {
     /// The sampler cannot draw initial conditions in this table.
     #[error(transparent)]
     NoRoom(#[from] NoRoom),
+    /// Newton's method for a periodic orbit did not close it: the distance
+    /// between the start and its `period`-th image is still `residual`.
+    #[error(
+        "no periodic orbit of period {period} found: after {iterations} Newton steps the orbit misses closing by {residual:.3e} (tolerance {tolerance:.1e}); start nearer an orbit, allow more iterations or loosen the tolerance"
+    )]
+    NotClosed {
+        /// The period sought (collisions).
+        period: u32,
+        /// Newton steps taken.
+        iterations: u32,
+        /// Largest component of `F^p(z) − z` at the best point reached
+        /// (`s` in units of the table's `unit_length`).
+        residual: f64,
+        /// The tolerance asked for.
+        tolerance: f64,
+    },
 }
 
 impl AnalysisError {

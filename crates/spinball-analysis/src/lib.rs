@@ -38,6 +38,9 @@
 //!   [`StopRule::total_error`](run::StopRule::total_error).
 //! - [`phase_space`]: the Birkhoff section, FTLE maps, the invariant measure
 //!   and return times, the regular islands and who sits on them.
+//! - [`orbits`]: periodic orbits of any period (Newton's method with the
+//!   exact tangent map), their stability (multipliers, class, Greene's
+//!   residue) and the α where it changes.
 //! - [`diagnostics`]: the paper's checks of its mechanism: phase-space
 //!   separation, collision rate, wall transitions and |ΔQ|, curved share,
 //!   energy conservation, and the paper's published numbers.
@@ -53,6 +56,7 @@
 //!
 //! ```text
 //! report
+//! orbits
 //! phase_space   diagnostics
 //! precision
 //! run
@@ -60,7 +64,7 @@
 //! ```
 //!
 //! `phase_space` and `diagnostics` sit side by side on `precision` and do
-//! not import each other.
+//! not import each other; `orbits` builds on `phase_space`.
 //!
 //! ```
 //! use spinball_analysis::estimators::Method;
@@ -90,6 +94,7 @@
 
 pub mod diagnostics;
 pub mod estimators;
+pub mod orbits;
 pub mod phase_space;
 pub mod precision;
 pub mod report;

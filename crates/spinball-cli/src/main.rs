@@ -2,7 +2,8 @@
 //!
 //! Lyapunov exponents over ensembles of initial conditions (`lyapunov`),
 //! their distribution (`ftle`), the full spectrum (`spectrum`), single
-//! trajectories (`trajectory`), tables (`table`), and campaigns on a
+//! trajectories (`trajectory`), tables (`table`), periodic orbits and
+//! their stability (`orbits`), and campaigns on a
 //! cluster: every ensemble command runs one shard with `--shard K/N`,
 //! `merge` combines the shards into the unsharded result bitwise, `slurm`
 //! writes the job array. Tables are built-in specs or table files (TOML or
@@ -31,6 +32,7 @@ use clap::{Parser, Subcommand};
 use crate::commands::ftle::{FtleArgs, ftle};
 use crate::commands::lyapunov::{LyapunovArgs, lyapunov};
 use crate::commands::merge::{MergeArgs, merge};
+use crate::commands::orbits::{OrbitsArgs, orbits};
 use crate::commands::slurm::{SlurmArgs, slurm};
 use crate::commands::spectrum::{SpectrumArgs, spectrum};
 use crate::commands::sweep::{SweepArgs, sweep};
@@ -72,6 +74,9 @@ enum Command {
     /// Write the SLURM job array (tables × α × shards) and merge job of a
     /// campaign.
     Slurm(Box<SlurmArgs>),
+    /// Periodic orbits of one period, their stability through a range of α
+    /// and the α where it changes.
+    Orbits(Box<OrbitsArgs>),
     /// λ(α) on one built-in table with every setting explicit, rewriting a
     /// JSON document after each α: the machine interface for scripts.
     Sweep(Box<SweepArgs>),
@@ -91,6 +96,7 @@ fn main() -> ExitCode {
         Command::Merge(a) => merge(a),
         Command::Slurm(a) => slurm(a),
         Command::Sweep(a) => sweep(a),
+        Command::Orbits(a) => orbits(a),
     };
     match result {
         Ok(()) | Err(CliError::StdoutClosed) => ExitCode::SUCCESS,

@@ -4,6 +4,7 @@
 pub mod ftle;
 pub mod lyapunov;
 pub mod merge;
+pub mod orbits;
 pub mod slurm;
 pub mod spectrum;
 pub mod sweep;

@@ -301,3 +301,12 @@ def spectrum(
     extended: bool = False,
     progress: Progress = None,
 ) -> SpectrumResult: ...
+def periodic_orbits(
+    table: TableLike,
+    period: int = 2,
+    alphas: Optional[Sequence[float]] = None,
+    *,
+    precision: float = 1e-8,
+    normal_samples: int = 4096,
+    grid: Tuple[int, int, int] = (0, 0, 0),
+) -> Dict[str, Any]: ...
