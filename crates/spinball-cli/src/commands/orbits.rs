@@ -9,6 +9,7 @@ use spinball_analysis::orbits::{
 };
 
 use crate::documents::write_json;
+use crate::files::{check_creatable, check_writable};
 use crate::error::CliError;
 use crate::output::write_text;
 use crate::stdout::print;
@@ -97,6 +98,12 @@ pub fn orbits(args: &OrbitsArgs) -> Result<(), CliError> {
             args.grid.len()
         )));
     };
+    if let Some(path) = &args.json {
+        check_writable("json", path)?;
+    }
+    if let Some(path) = &args.csv {
+        check_creatable("csv", path)?;
+    }
     let search = SearchOptions {
         normal_samples: args.normal_samples,
         grid: [ns, nv, nw],
