@@ -80,7 +80,7 @@ fn main() -> ExitCode {
         println!();
         for (i, ((c, (_, name)), at_one)) in curves.iter().zip(TABLES).zip(AT_ONE).enumerate() {
             let f =
-                |e: &LyapunovEstimate| Measurement::new(e.chaotic_fraction, e.chaotic_fraction_sem);
+                |e: &LyapunovEstimate| Measurement::new(e.chaotic_fraction(), e.chaotic_fraction_sem());
             let (lo, hi) = (
                 c.rows.iter().map(|r| PCT * r.chaotic_fraction_band_min),
                 c.rows.iter().map(|r| PCT * r.chaotic_fraction_band_max),

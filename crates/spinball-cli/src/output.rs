@@ -107,7 +107,7 @@ impl OutputArgs {
             for e in estimates {
                 table.push_str(&format!(
                     "{:>10} {:>11.6} {:>10.6} {:>11.6} {:>7.3} {:>8} {:>9.2}\n",
-                    e.alpha, e.mean, e.sem, e.median, e.chaotic_fraction, e.n_ics, e.wall_time_s
+                    e.alpha(), e.mean(), e.sem(), e.median(), e.chaotic_fraction(), e.n_ics(), e.wall_time_s()
                 ));
             }
             print(&table)
@@ -127,15 +127,15 @@ impl OutputArgs {
             write_text(path, &csv_string(estimates).map_err(CliError::failed)?)?;
         }
         if let Some(path) = &self.npy {
-            let n = estimates.first().map_or(0, |e| e.trajectories.len());
-            if estimates.iter().any(|e| e.trajectories.len() != n) {
+            let n = estimates.first().map_or(0, |e| e.trajectories().len());
+            if estimates.iter().any(|e| e.trajectories().len() != n) {
                 return Err(CliError::Failed(
                     "--npy needs the same number of initial conditions at every α".into(),
                 ));
             }
             let values: Vec<f64> = estimates
                 .iter()
-                .flat_map(|e| e.trajectories.iter().map(|t| t.exponent))
+                .flat_map(|e| e.trajectories().iter().map(|t| t.exponent))
                 .collect();
             write_npy(path, &[estimates.len() as u64, n as u64], &values)?;
         }

@@ -38,9 +38,9 @@ pub fn trajectories_csv(estimates: &[LyapunovEstimate]) -> Csv {
         "collisions",
     ]);
     for e in estimates {
-        for t in &e.trajectories {
+        for t in e.trajectories() {
             csv.row(&[
-                &e.alpha,
+                &e.alpha(),
                 &t.index,
                 &t.exponent,
                 &t.per_collision,
@@ -198,14 +198,14 @@ mod tests {
         assert_eq!(t.rows(), 5);
         let line: Vec<&str> = t.as_str().lines().nth(3).unwrap().split(',').collect();
         assert_eq!(line[..2], ["0.5", "2"]);
-        assert_eq!(line[2].parse::<f64>().unwrap(), e.trajectories[2].exponent);
+        assert_eq!(line[2].parse::<f64>().unwrap(), e.trajectories()[2].exponent);
         assert_eq!(line[5], "300");
         let s = summary_csv(&sweep_rows(std::slice::from_ref(&e)).unwrap());
         let lines: Vec<&str> = s.as_str().lines().collect();
         assert!(lines[0].contains(",band_min,band_max,wall_s"));
         let fields: Vec<&str> = lines[1].split(',').collect();
         assert_eq!(fields.len(), 13);
-        assert_eq!(fields[3].parse::<f64>().unwrap(), e.mean);
+        assert_eq!(fields[3].parse::<f64>().unwrap(), e.mean());
     }
 
     #[test]

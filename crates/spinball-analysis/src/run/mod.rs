@@ -220,7 +220,7 @@
 //!     }
 //! })?;
 //! assert_eq!(estimates.len(), 2);
-//! assert!(estimates.iter().all(|e| e.sem <= 0.05 * e.mean));
+//! assert!(estimates.iter().all(|e| e.sem() <= 0.05 * e.mean()));
 //! print!("{}", spinball_analysis::report::csv_string(&estimates)?);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```

@@ -77,7 +77,7 @@ pub fn ftle(args: &FtleArgs) -> Result<(), CliError> {
     let n = estimates.len();
     for (k, e) in estimates.iter().enumerate() {
         if let Some(path) = &args.per_ic {
-            write_text(&nth(path, k, n), &trajectories_csv(&e.trajectories))?;
+            write_text(&nth(path, k, n), &trajectories_csv(&e.trajectories()))?;
         }
         if let Some(path) = &args.histogram {
             let hist = e
