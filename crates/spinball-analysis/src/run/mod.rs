@@ -274,4 +274,4 @@ pub use shard::Shard;
 pub use spectrum_ensemble::{SpectrumEstimate, spectrum_ensemble};
 pub use starts::Starts;
 pub use stop_rule::StopRule;
-pub use trajectory::{TrajectoryStats, ftle_trajectories, trajectories_csv, trajectory_ftle};
+pub use trajectory::{TrajectoryStats, ftle_trajectories, trajectory_ftle};
