@@ -1,5 +1,5 @@
-//! Where results go: JSON (with full provenance), CSV (one row per α) and
-//! NPY (per-initial-condition exponents, for `numpy.load`).
+//! Where results go: JSON (a `spinball.lyapunov` document, with full
+//! provenance), CSV (one `SweepRow` per α) and NPY (per-initial-condition exponents, for `numpy.load`).
 
 use std::fs;
 use std::io::BufWriter;
@@ -7,10 +7,10 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use npyz::WriterBuilder;
-use spinball_analysis::report::csv_string;
+use spinball_analysis::report::{Document, LyapunovDocument, csv_string};
 use spinball_analysis::run::LyapunovEstimate;
 
-use crate::documents::{ResultDocument, write_json};
+use crate::documents::write_document;
 use crate::error::CliError;
 use crate::files::check_replaceable;
 use crate::stdout::print;
@@ -121,7 +121,11 @@ impl OutputArgs {
     /// [`CliError::Failed`] for a file that cannot be written.
     pub fn write_files(&self, estimates: &[LyapunovEstimate]) -> Result<(), CliError> {
         if let Some(path) = &self.json {
-            write_json(path, &ResultDocument::new(estimates.to_vec()))?;
+            write_document(
+                path,
+                &Document::Lyapunov(LyapunovDocument::new(estimates.to_vec())),
+                false,
+            )?;
         }
         if let Some(path) = &self.csv {
             write_text(path, &csv_string(estimates).map_err(CliError::failed)?)?;

@@ -285,8 +285,7 @@ struct CurvesBody<'a, E: ?Sized> {
     extra: &'a E,
 }
 
-/// Write every curve's rows to `<stem>.csv` ([`spinball_analysis::report::CSV_HEADER`]
-/// columns) and the JSON document `<stem>.json`: the report's header, the
+/// Write every curve's rows to `<stem>.csv` (the columns of [`SweepRow`]) and the JSON document `<stem>.json`: the report's header, the
 /// total wall time, `series` (label, plan and points of each curve) and the
 /// fields of `extra` (a struct or map; `&()` for none).
 ///

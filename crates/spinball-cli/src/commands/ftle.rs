@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 use spinball_analysis::estimators::Histogram;
-use spinball_analysis::run::trajectories_csv;
+use spinball_analysis::report::trajectories_csv;
 
 use crate::commands::lyapunov::{LyapunovArgs, Outcome, run_ensembles};
 use crate::error::CliError;
@@ -17,7 +17,7 @@ pub struct FtleArgs {
     #[command(flatten)]
     pub lyapunov: LyapunovArgs,
     /// Write every initial condition's values as CSV
-    /// (`index,exponent,per_collision,time,collisions`); with several α,
+    /// (`alpha,index,exponent,per_collision,time,collisions`); with several α,
     /// one file per α with `.alpha-K` before the extension.
     #[arg(long)]
     pub per_ic: Option<PathBuf>,
@@ -77,7 +77,8 @@ pub fn ftle(args: &FtleArgs) -> Result<(), CliError> {
     let n = estimates.len();
     for (k, e) in estimates.iter().enumerate() {
         if let Some(path) = &args.per_ic {
-            write_text(&nth(path, k, n), &trajectories_csv(&e.trajectories()))?;
+            let csv = trajectories_csv(std::slice::from_ref(e)).map_err(CliError::failed)?;
+            write_text(&nth(path, k, n), &csv)?;
         }
         if let Some(path) = &args.histogram {
             let hist = e
