@@ -1,12 +1,15 @@
 //! Result classes: `LyapunovResult` (an ensemble estimate of the largest
 //! exponent) and `SpectrumResult` (the ensemble spectrum), each with its
 //! fields as attributes, per-trajectory values as NumPy arrays, and
-//! `to_dict()` / `to_json()` equal to the Rust result's serde JSON.
+//! `to_dict()` / `to_json()` equal to the Rust result's serde JSON; and
+//! `read_results` / `write_results`, the result documents of the command
+//! line (one schema, `spinball_analysis::report::Document`).
 
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
+use spinball_analysis::report::{Document, LyapunovDocument};
 use spinball_analysis::run::{LyapunovEstimate, Provenance, SpectrumEstimate};
 
 use crate::errors::{analysis, value_error};
@@ -458,4 +461,37 @@ impl PySpectrumResult {
             m[4]
         )
     }
+}
+
+/// The Lyapunov results of a result document (the `--json` file of
+/// `spinball lyapunov`, `ftle` or `merge`, or `write_results` text), one
+/// per α. Raises `ValueError` naming the schema found and the schema this
+/// version reads for a file of another version (spinball 0.1 results
+/// load), and for text that is not such a document.
+#[pyfunction]
+pub fn read_results(text: &str) -> PyResult<Vec<PyLyapunovResult>> {
+    let doc = Document::from_json(text)
+        .and_then(Document::into_lyapunov)
+        .map_err(|e| value_error(e.to_string()))?;
+    Ok(doc
+        .points
+        .into_iter()
+        .map(|inner| PyLyapunovResult { inner })
+        .collect())
+}
+
+/// `results` as a result document (kind `spinball.lyapunov`, the format
+/// of `spinball lyapunov --json`): one line, or indented if `pretty`.
+#[pyfunction]
+#[pyo3(signature = (results, pretty = false))]
+pub fn write_results(results: Vec<PyRef<'_, PyLyapunovResult>>, pretty: bool) -> PyResult<String> {
+    let doc = Document::Lyapunov(LyapunovDocument::new(
+        results.iter().map(|r| r.inner.clone()).collect(),
+    ));
+    let text = if pretty {
+        doc.to_json_pretty()
+    } else {
+        doc.to_json()
+    };
+    text.map_err(|e| PyRuntimeError::new_err(format!("cannot serialise the results: {e}")))
 }

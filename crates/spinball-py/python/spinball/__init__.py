@@ -45,9 +45,11 @@ from ._spinball import (
     __version__,
     alpha_sweep,
     lyapunov,
+    read_results,
     spectrum,
     table,
     table_file,
+    write_results,
 )
 
 __all__ = [
@@ -70,7 +72,9 @@ __all__ = [
     "__version__",
     "alpha_sweep",
     "lyapunov",
+    "read_results",
     "spectrum",
     "table",
     "table_file",
+    "write_results",
 ]
