@@ -73,7 +73,7 @@ fn main() -> ExitCode {
             collisions,
             args.threads,
         )?;
-        let classes = compare_classes(&island.trajectories(), &profiles, CHAOS_THRESHOLD)?;
+        let classes = compare_classes(island.trajectories(), &profiles, CHAOS_THRESHOLD)?;
         for (name, c) in [("regular", &classes.regular), ("chaotic", &classes.chaotic)] {
             let (flat, vx, v_par) = (c.flat_share, c.abs_initial_vx, c.abs_first_v_par);
             println!(

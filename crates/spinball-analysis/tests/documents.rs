@@ -13,9 +13,7 @@ use spinball_analysis::report::{
     Document, DocumentError, LyapunovDocument, PartialDocument, SCHEMA, SpectrumDocument,
     SweepDocument,
 };
-use spinball_analysis::run::{
-    Ensemble, Shard, Silent, TableRecord, Threads, spectrum_ensemble,
-};
+use spinball_analysis::run::{Ensemble, Shard, Silent, TableRecord, Threads, spectrum_ensemble};
 use spinball_core::{Billiard, Sampler, SpinLaw};
 use spinball_geometry::{Stadium, Table};
 
@@ -58,7 +56,9 @@ fn every_kind_reads_back_as_written() {
     let shard = Shard::new(1, 2).unwrap();
     let mut partial = PartialDocument::new(shard, 0..4);
     let piece = run.clone().with_indices(shard.range(0..4));
-    partial.points.push(piece.run_partial(None, &mut Silent).unwrap());
+    partial
+        .points
+        .push(piece.run_partial(None, &mut Silent).unwrap());
     let partial = Document::LyapunovPartial(partial);
     assert_eq!(round_trip(&partial), partial);
 
@@ -67,10 +67,17 @@ fn every_kind_reads_back_as_written() {
     let sweep = Document::Sweep(sweep);
     assert_eq!(round_trip(&sweep), sweep);
 
-    let billiard = Billiard::new(run.table.clone(), run.law);
+    let billiard = Billiard::new(run.table, run.law);
     let options = SpectrumOptions::new(50, Method::Tangent);
-    let spectra = spectrum_ensemble(&billiard, Sampler::Paper, 3, 0..4, &options, Threads::Fixed(1))
-        .unwrap();
+    let spectra = spectrum_ensemble(
+        &billiard,
+        Sampler::Paper,
+        3,
+        0..4,
+        &options,
+        Threads::Fixed(1),
+    )
+    .unwrap();
     let spectrum = Document::Spectrum(SpectrumDocument::new(
         TableRecord::of(&run.table),
         vec![0.5],
@@ -119,10 +126,20 @@ fn other_layouts_of_0_1_are_refused_naming_both_versions() {
 #[test]
 fn a_newer_schema_is_refused_and_a_wrong_kind_is_named() {
     let doc = Document::Lyapunov(LyapunovDocument::new(vec![old_run().run().unwrap()]));
-    let text = doc.to_json().unwrap().replacen("\"schema\":2", "\"schema\":3", 1);
+    let text = doc
+        .to_json()
+        .unwrap()
+        .replacen("\"schema\":2", "\"schema\":3", 1);
     let err = Document::from_json(&text).unwrap_err();
     assert!(
-        matches!(err, DocumentError::Version { found: 3, expected: 2, .. }),
+        matches!(
+            err,
+            DocumentError::Version {
+                found: 3,
+                expected: 2,
+                ..
+            }
+        ),
         "{err}"
     );
     assert!(err.to_string().contains("newer spinball"), "{err}");

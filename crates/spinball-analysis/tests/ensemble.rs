@@ -49,8 +49,20 @@ fn assert_same_bits(a: &LyapunovEstimate, b: &LyapunovEstimate) {
         assert_eq!(x.collisions, y.collisions);
     }
     assert_eq!(
-        (&a.table(), a.alpha().to_bits(), &a.method(), a.sampler(), a.seed()),
-        (&b.table(), b.alpha().to_bits(), &b.method(), b.sampler(), b.seed())
+        (
+            &a.table(),
+            a.alpha().to_bits(),
+            &a.method(),
+            a.sampler(),
+            a.seed()
+        ),
+        (
+            &b.table(),
+            b.alpha().to_bits(),
+            &b.method(),
+            b.sampler(),
+            b.seed()
+        )
     );
 }
 
@@ -163,7 +175,10 @@ fn stop_rule_min_ics_and_range() {
     // α = 0 is uniformly chaotic: a 50% target is met after the first batch
     // unless min_ics holds it back.
     let early = e.run_until(&StopRule::new(8, 0.5)).unwrap();
-    assert_eq!((early.stop(), early.n_ics()), (StopReason::TargetReached, 8));
+    assert_eq!(
+        (early.stop(), early.n_ics()),
+        (StopReason::TargetReached, 8)
+    );
     let held = e
         .run_until(&StopRule::new(8, 0.5).with_min_ics(20))
         .unwrap();

@@ -154,7 +154,9 @@ fn f5_unresolvable_thin_table_is_an_error_and_tangent_still_runs() {
     assert_eq!(scalar, lanes.unwrap_err());
     let (s, l) = both(&e.with_method(Method::Tangent));
     let (s, l) = (s.unwrap(), l.unwrap());
-    assert!(s.mean().is_finite() && (s.mean() - l.mean()).abs() <= 1e-9 * s.mean().abs().max(1e-300));
+    assert!(
+        s.mean().is_finite() && (s.mean() - l.mean()).abs() <= 1e-9 * s.mean().abs().max(1e-300)
+    );
 }
 
 #[test]

@@ -142,7 +142,10 @@ fn integrable_tables_have_no_chaos() {
             let est = estimate(table, alpha, 100, 20_000);
             eprintln!(
                 "{table} α={alpha}: λ = {:.2e} ± {:.1e}, max FTLE {:.2e}, f_ch {}",
-                est.mean(), est.sem(), est.max(), est.chaotic_fraction()
+                est.mean(),
+                est.sem(),
+                est.max(),
+                est.chaotic_fraction()
             );
             assert!(est.mean() < 1e-3, "{table} α={alpha}: λ = {}", est.mean());
             assert!(
@@ -183,7 +186,10 @@ fn tangent_agrees_with_finite_differences() {
             let diff = tangent.mean() - fd.mean();
             eprintln!(
                 "{table} α={alpha}, {collisions} collisions: FD {:.5} ± {:.5}, tangent {:.5} ± {:.5}, difference {diff:+.2e}",
-                fd.mean(), fd.sem(), tangent.mean(), tangent.sem()
+                fd.mean(),
+                fd.sem(),
+                tangent.mean(),
+                tangent.sem()
             );
             assert!(
                 diff.abs() <= fd.sem(),

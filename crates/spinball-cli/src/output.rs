@@ -107,7 +107,13 @@ impl OutputArgs {
             for e in estimates {
                 table.push_str(&format!(
                     "{:>10} {:>11.6} {:>10.6} {:>11.6} {:>7.3} {:>8} {:>9.2}\n",
-                    e.alpha(), e.mean(), e.sem(), e.median(), e.chaotic_fraction(), e.n_ics(), e.wall_time_s()
+                    e.alpha(),
+                    e.mean(),
+                    e.sem(),
+                    e.median(),
+                    e.chaotic_fraction(),
+                    e.n_ics(),
+                    e.wall_time_s()
                 ));
             }
             print(&table)

@@ -145,7 +145,10 @@ impl Curve {
         &self,
         value: impl Fn(&LyapunovEstimate) -> Measurement,
     ) -> Vec<(f64, Measurement)> {
-        self.estimates.iter().map(|e| (e.alpha(), value(e))).collect()
+        self.estimates
+            .iter()
+            .map(|e| (e.alpha(), value(e)))
+            .collect()
     }
 
     /// `(α, value(estimate))` per point, for a value that can fail.

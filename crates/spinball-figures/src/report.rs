@@ -147,8 +147,7 @@ impl Report {
     /// # Errors
     /// [`FigureError::Io`].
     pub fn sweep_rows(&mut self, file: &str, rows: &[SweepRow]) -> Result<PathBuf, FigureError> {
-        let text = csv_text(rows)
-            .map_err(|e| io(Path::new(file), std::io::Error::other(e)))?;
+        let text = csv_text(rows).map_err(|e| io(Path::new(file), std::io::Error::other(e)))?;
         self.text(file, &text)
     }
 

@@ -402,7 +402,8 @@ mod tests {
             .with_seed(5)
             .with_threads(Threads::Fixed(1));
         let expected = convergence_estimates(&ensemble, &[300, 600]).unwrap();
-        let means = |e: &[LyapunovEstimate]| e.iter().map(|e| (e.mean(), e.sem())).collect::<Vec<_>>();
+        let means =
+            |e: &[LyapunovEstimate]| e.iter().map(|e| (e.mean(), e.sem())).collect::<Vec<_>>();
         assert_eq!(means(&rows[3].columns), means(&expected));
         assert_eq!(rows[3].columns[1].n_ics(), 4);
         use spinball_plot::Plot;

@@ -252,7 +252,7 @@ impl PyLyapunovResult {
             e.engine(),
         );
         let d = loads(py, &json(&p, None)?)?;
-        d.set_item("version", &e.version())?;
+        d.set_item("version", e.version())?;
         Ok(d)
     }
     /// The per-trajectory exponents as an `FtleDistribution`.

@@ -107,9 +107,7 @@ mod tests {
                 let shard = Shard::new(k, 2).unwrap();
                 let indices = shard.range(0..8);
                 let e: Ensemble<_> = template().with_seed(seed).with_indices(indices.clone());
-                let part = e
-                    .run_partial(None, &mut crate::run::Silent)
-                    .unwrap();
+                let part = e.run_partial(None, &mut crate::run::Silent).unwrap();
                 let mut d = PartialDocument::new(shard, 0..8);
                 d.points.push(part);
                 d
@@ -147,7 +145,11 @@ mod tests {
         let mut wider = a[1].clone();
         wider.total = 0..9;
         let e = a[0].same_run(&wider).unwrap_err();
-        assert!(e.to_string().contains("initial conditions 0..8 in one, 0..9 in another"), "{e}");
+        assert!(
+            e.to_string()
+                .contains("initial conditions 0..8 in one, 0..9 in another"),
+            "{e}"
+        );
         assert_eq!(PartialDocument::merge(&[]), Err(MergeError::Empty));
         assert!(matches!(
             PartialDocument::merge(&a[..1]),

@@ -213,7 +213,10 @@ mod tests {
         .unwrap();
         let csv = csv_string(std::slice::from_ref(&e)).unwrap();
         let line = csv.lines().nth(1).unwrap();
-        assert!(line.starts_with("\"rectangle:L=1,H=1\",0.3,fd,paper,"), "{line}");
+        assert!(
+            line.starts_with("\"rectangle:L=1,H=1\",0.3,fd,paper,"),
+            "{line}"
+        );
         // The rectangle is integrable: no chaotic trajectory, an empty field.
         let rows: Vec<SweepRow> = read_csv(&csv).unwrap();
         assert_eq!(rows[0].conditional_mean, e.conditional_mean());

@@ -61,7 +61,11 @@ pub fn merge(args: &MergeArgs) -> Result<(), CliError> {
             let mut docs = vec![first];
             for path in &args.parts[1..] {
                 let doc = read_document(path)?.into_partial().map_err(|e| {
-                    CliError::Usage(format!("{} is {e}, like {}", path.display(), first_path.display()))
+                    CliError::Usage(format!(
+                        "{} is {e}, like {}",
+                        path.display(),
+                        first_path.display()
+                    ))
                 })?;
                 docs[0]
                     .same_run(&doc)

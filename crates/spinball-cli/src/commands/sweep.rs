@@ -175,7 +175,12 @@ pub fn sweep(args: &SweepArgs) -> Result<(), CliError> {
             .map_err(|e| CliError::Failed(format!("alpha = {}: {e}", law.alpha())))?;
         say(format!(
             "{:>8} {:>10.5} {:>9.5} {:>10.5} {:>7.3} {:>9.2}\n",
-            est.alpha(), est.mean(), est.sem(), est.median(), est.chaotic_fraction(), est.wall_time_s()
+            est.alpha(),
+            est.mean(),
+            est.sem(),
+            est.median(),
+            est.chaotic_fraction(),
+            est.wall_time_s()
         ));
         // The budget needs a bias fit (at least 8 collisions); a point
         // without one is still written, with the reason on stderr.
