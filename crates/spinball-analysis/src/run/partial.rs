@@ -406,7 +406,7 @@ impl<B: Boundary + Sync> Ensemble<B> {
     /// // ...and resumed: the same numbers as one uninterrupted run.
     /// let done = ensemble.run_partial(Some(part), &mut spinball_analysis::run::Silent)?;
     /// let resumed = merge_partials(vec![done], None)?;
-    /// assert_eq!(resumed.mean.to_bits(), ensemble.run()?.mean.to_bits());
+    /// assert_eq!(resumed.mean().to_bits(), ensemble.run()?.mean().to_bits());
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     ///
