@@ -44,27 +44,18 @@ impl PartialDocument {
     /// (its value in `self`, then in `other`); [`MergeError::Table`] for a
     /// table without a shape.
     pub fn same_run(&self, other: &PartialDocument) -> Result<(), MergeError> {
-        let differ = |what, first: String, other: String| {
-            Err(MergeError::DifferentRuns { what, first, other })
-        };
-        if self.total != other.total {
-            return differ(
-                "initial conditions",
-                format!("{:?}", self.total),
-                format!("{:?}", other.total),
-            );
-        }
-        if self.points.len() != other.points.len() {
-            return differ(
-                "number of α values",
-                self.points.len().to_string(),
-                other.points.len().to_string(),
-            );
-        }
+        same_extent(
+            (&self.total, self.points.len()),
+            (&other.total, other.points.len()),
+        )?;
         for (a, b) in self.points.iter().zip(&other.points) {
             a.provenance.difference(&b.provenance)?;
             if a.version != b.version {
-                return differ("version", a.version.clone(), b.version.clone());
+                return Err(MergeError::DifferentRuns {
+                    what: "version",
+                    first: a.version.clone(),
+                    other: b.version.clone(),
+                });
             }
         }
         Ok(())
@@ -92,6 +83,38 @@ impl PartialDocument {
             .collect::<Result<Vec<_>, _>>()?;
         Ok(LyapunovDocument::new(points))
     }
+}
+
+/// Whether two pieces (their whole run's initial conditions and their
+/// number of α) can be of one run.
+///
+/// # Errors
+/// [`MergeError::DifferentRuns`] naming the initial conditions or the
+/// number of α, with the first piece's value first.
+pub(super) fn same_extent(
+    first: (&Range<u64>, usize),
+    other: (&Range<u64>, usize),
+) -> Result<(), MergeError> {
+    let (what, a, b) = if first.0 != other.0 {
+        (
+            "initial conditions",
+            format!("{:?}", first.0),
+            format!("{:?}", other.0),
+        )
+    } else if first.1 != other.1 {
+        (
+            "number of α values",
+            first.1.to_string(),
+            other.1.to_string(),
+        )
+    } else {
+        return Ok(());
+    };
+    Err(MergeError::DifferentRuns {
+        what,
+        first: a,
+        other: b,
+    })
 }
 
 #[cfg(test)]

@@ -5,6 +5,7 @@
 
 use std::ops::Range;
 
+use super::partial::same_extent;
 use crate::run::{MergeError, Shard, SpectrumEstimate, TableRecord};
 
 /// The spectra of a run: one estimate per α, of the whole run or of one
@@ -53,9 +54,6 @@ impl SpectrumDocument {
     /// [`MergeError::DifferentRuns`] naming the first field that differs;
     /// [`MergeError::Table`] for a table without a shape.
     pub fn same_run(&self, other: &SpectrumDocument) -> Result<(), MergeError> {
-        let differ = |what, first: String, other: String| {
-            Err(MergeError::DifferentRuns { what, first, other })
-        };
         self.table.same_table(&other.table)?;
         if self
             .alphas
@@ -63,27 +61,16 @@ impl SpectrumDocument {
             .map(|a| a.to_bits())
             .ne(other.alphas.iter().map(|a| a.to_bits()))
         {
-            return differ(
-                "alpha",
-                format!("{:?}", self.alphas),
-                format!("{:?}", other.alphas),
-            );
+            return Err(MergeError::DifferentRuns {
+                what: "alpha",
+                first: format!("{:?}", self.alphas),
+                other: format!("{:?}", other.alphas),
+            });
         }
-        if self.total != other.total {
-            return differ(
-                "initial conditions",
-                format!("{:?}", self.total),
-                format!("{:?}", other.total),
-            );
-        }
-        if self.points.len() != other.points.len() {
-            return differ(
-                "number of α values",
-                self.points.len().to_string(),
-                other.points.len().to_string(),
-            );
-        }
-        Ok(())
+        same_extent(
+            (&self.total, self.points.len()),
+            (&other.total, other.points.len()),
+        )
     }
 
     /// Join the shards of one spectrum run (in any order) into the whole
