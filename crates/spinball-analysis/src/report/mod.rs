@@ -83,7 +83,7 @@ pub use lyapunov::LyapunovDocument;
 pub use names::{IcSource, MethodName};
 pub use partial::PartialDocument;
 pub use rows::{BudgetRow, SweepRow, sweep_rows};
-pub use spectrum::SpectrumDocument;
+pub use spectrum::{SpectrumDocument, SpectrumRow};
 pub use sweep::{SweepDocument, SweepPoint};
 #[cfg(feature = "serde")]
 pub use table::{

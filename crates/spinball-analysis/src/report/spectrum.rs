@@ -128,3 +128,65 @@ impl SpectrumDocument {
         })
     }
 }
+
+/// One α of a spectrum document as a flat record: the five mean exponents
+/// (`l1` largest), their standard errors and the number of initial
+/// conditions; the CSV of `spinball spectrum --csv`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
+pub struct SpectrumRow {
+    /// Spin parameter.
+    pub alpha: f64,
+    /// Mean of the largest exponent.
+    pub l1: f64,
+    /// Mean of the second exponent.
+    pub l2: f64,
+    /// Mean of the third exponent.
+    pub l3: f64,
+    /// Mean of the fourth exponent.
+    pub l4: f64,
+    /// Mean of the smallest exponent.
+    pub l5: f64,
+    /// Standard error of `l1`.
+    pub sem1: f64,
+    /// Standard error of `l2`.
+    pub sem2: f64,
+    /// Standard error of `l3`.
+    pub sem3: f64,
+    /// Standard error of `l4`.
+    pub sem4: f64,
+    /// Standard error of `l5`.
+    pub sem5: f64,
+    /// Initial conditions.
+    pub n_ics: u64,
+}
+
+impl SpectrumDocument {
+    /// One [`SpectrumRow`] per α.
+    #[must_use]
+    pub fn rows(&self) -> Vec<SpectrumRow> {
+        self.alphas
+            .iter()
+            .zip(&self.points)
+            .map(|(&alpha, p)| {
+                let [l1, l2, l3, l4, l5] = p.mean;
+                let [sem1, sem2, sem3, sem4, sem5] = p.sem;
+                SpectrumRow {
+                    alpha,
+                    l1,
+                    l2,
+                    l3,
+                    l4,
+                    l5,
+                    sem1,
+                    sem2,
+                    sem3,
+                    sem4,
+                    sem5,
+                    n_ics: p.n_ics,
+                }
+            })
+            .collect()
+    }
+}

@@ -4,7 +4,7 @@
 use clap::Args;
 use spinball_analysis::AnalysisError;
 use spinball_analysis::estimators::SpectrumOptions;
-use spinball_analysis::report::{Document, SpectrumDocument};
+use spinball_analysis::report::{Document, SpectrumDocument, csv_text};
 use spinball_analysis::run::{TableRecord, spectrum_ensemble};
 use spinball_core::Billiard;
 
@@ -53,11 +53,7 @@ pub fn write_spectrum(doc: &SpectrumDocument, out: &OutputArgs) -> Result<(), Cl
         write_document(path, &Document::Spectrum(doc.clone()), false)?;
     }
     if let Some(path) = &out.csv {
-        let mut csv = String::from("alpha,l1,l2,l3,l4,l5,sem1,sem2,sem3,sem4,sem5,n_ics\n");
-        for (a, p) in doc.alphas.iter().zip(&doc.points) {
-            let v: Vec<String> = p.mean.iter().chain(&p.sem).map(f64::to_string).collect();
-            csv.push_str(&format!("{a},{},{}\n", v.join(","), p.n_ics));
-        }
+        let csv = csv_text(&doc.rows()).map_err(CliError::failed)?;
         write_text(path, &csv)?;
     }
     if let Some(path) = &out.npy {
