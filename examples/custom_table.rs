@@ -49,7 +49,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!("{}", SweepRow::table_header());
     for estimate in sweep.run()? {
         println!("{}", SweepRow::from_estimate(&estimate)?.table_line());
-        println!("    engine: {}, {estimate}", estimate.engine);
+        println!("    engine: {}, {estimate}", estimate.engine());
     }
     Ok(())
 }

@@ -109,8 +109,8 @@ impl TableVisitor for &Bench {
                     let clock = Instant::now();
                     let estimate = ensembles[k].run()?;
                     let wall = clock.elapsed().as_secs_f64();
-                    if estimate.engine != engine {
-                        return Err(format!("asked for {engine}, ran {}", estimate.engine).into());
+                    if estimate.engine() != engine {
+                        return Err(format!("asked for {engine}, ran {}", estimate.engine()).into());
                     }
                     ns[k].push(wall / (ics as f64 * self.collisions as f64) * 1e9);
                 }

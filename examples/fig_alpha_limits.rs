@@ -90,7 +90,7 @@ fn main() -> ExitCode {
                 let at_zero = &curves[4 * t + 2 * m + 1];
                 plot = plot
                     .series(sweep.lambda_series().color(palette(m)))
-                    .hline(at_zero.estimates[0].mean, "");
+                    .hline(at_zero.estimates[0].mean(), "");
             }
             grid = grid.panel(plot);
         }

@@ -79,8 +79,9 @@ fn main() -> ExitCode {
             .legend(Legend::UpperLeft);
         println!();
         for (i, ((c, (_, name)), at_one)) in curves.iter().zip(TABLES).zip(AT_ONE).enumerate() {
-            let f =
-                |e: &LyapunovEstimate| Measurement::new(e.chaotic_fraction, e.chaotic_fraction_sem);
+            let f = |e: &LyapunovEstimate| {
+                Measurement::new(e.chaotic_fraction(), e.chaotic_fraction_sem())
+            };
             let (lo, hi) = (
                 c.rows.iter().map(|r| PCT * r.chaotic_fraction_band_min),
                 c.rows.iter().map(|r| PCT * r.chaotic_fraction_band_max),

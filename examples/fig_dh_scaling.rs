@@ -62,8 +62,9 @@ fn main() -> ExitCode {
         let mut summary = Vec::new();
         for (i, c) in curves.iter().enumerate() {
             let (color, label) = (palette(i), &c.label);
-            let f =
-                |e: &LyapunovEstimate| Measurement::new(e.chaotic_fraction, e.chaotic_fraction_sem);
+            let f = |e: &LyapunovEstimate| {
+                Measurement::new(e.chaotic_fraction(), e.chaotic_fraction_sem())
+            };
             let f0 = f(&c.estimates[0]);
             let dhf = c.points(dhf_product);
             let lambda_ratio: Vec<_> = c

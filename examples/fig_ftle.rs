@@ -26,9 +26,9 @@ use std::process::ExitCode;
 use serde_json::json;
 use spinball_analysis::estimators::{CHAOS_THRESHOLD, THRESHOLD_BAND};
 use spinball_analysis::phase_space::{compare_classes, trajectory_profiles};
-use spinball_analysis::report::sweep_rows;
+use spinball_analysis::report::{sweep_rows, trajectories_csv};
 use spinball_core::{Billiard, Sampler, SpinLaw};
-use spinball_figures::{ftle_histogram, run_figure, summary_csv, template, trajectories_csv};
+use spinball_figures::{ftle_histogram, run_figure, summary_csv, template};
 use spinball_plot::Grid;
 
 const NAME: &str = "fig_ftle";
@@ -73,7 +73,7 @@ fn main() -> ExitCode {
             collisions,
             args.threads,
         )?;
-        let classes = compare_classes(&island.trajectories, &profiles, CHAOS_THRESHOLD)?;
+        let classes = compare_classes(island.trajectories(), &profiles, CHAOS_THRESHOLD)?;
         for (name, c) in [("regular", &classes.regular), ("chaotic", &classes.chaotic)] {
             let (flat, vx, v_par) = (c.flat_share, c.abs_initial_vx, c.abs_first_v_par);
             println!(
@@ -83,7 +83,7 @@ fn main() -> ExitCode {
         }
 
         let rows = sweep_rows(&estimates)?;
-        report.csv("ftle.csv", &trajectories_csv(&estimates))?;
+        report.text("ftle.csv", &trajectories_csv(&estimates)?)?;
         report.csv("ftle_summary.csv", &summary_csv(&rows))?;
         let islands = json!({"alpha": ISLAND_ALPHA, "comparison": classes});
         let doc = json!({

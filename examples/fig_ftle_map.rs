@@ -82,7 +82,7 @@ fn main() -> ExitCode {
                 report.npy(&file, &[size as u64, size as u64], &map.to_array())?;
                 grid.push(island_panel(name, &island, FTLE_MAX));
                 maps.push(json!({"table": spec, "alpha": alpha, "file": file, "perimeter": map.perimeter,
-                    "regular_fraction": map.regular_fraction(), "sampler": sampled.chaotic_fraction, "bouncing": island.bouncing}));
+                    "regular_fraction": map.regular_fraction(), "sampler": sampled.chaotic_fraction(), "bouncing": island.bouncing}));
             }
         }
         report.png(

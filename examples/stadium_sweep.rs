@@ -77,9 +77,17 @@ fn main() -> ExitCode {
         let (mut diffs, mut in_sem) = (Vec::new(), Vec::new());
         for (a, b) in fd.estimates.iter().zip(&tangent.estimates) {
             let d = paired_difference(a, b)?;
-            println!("  alpha {:>6.4}: {:+.2e} ± {:.2e}", a.alpha, d.value, d.sem);
-            diffs.push((a.alpha, d));
-            in_sem.push((a.alpha, Measurement::new(d.value / a.sem, d.sem / a.sem)));
+            println!(
+                "  alpha {:>6.4}: {:+.2e} ± {:.2e}",
+                a.alpha(),
+                d.value,
+                d.sem
+            );
+            diffs.push((a.alpha(), d));
+            in_sem.push((
+                a.alpha(),
+                Measurement::new(d.value / a.sem(), d.sem / a.sem()),
+            ));
         }
         // Each point's error budget: the SEM is one of three errors.
         let mut budgets = Vec::new();
@@ -93,7 +101,7 @@ fn main() -> ExitCode {
                 let at = stadium
                     .clone()
                     .with_method(m)
-                    .with_law(SpinLaw::new(e.alpha)?);
+                    .with_law(SpinLaw::new(e.alpha())?);
                 let row = BudgetRow::new(e, &ErrorBudget::for_estimate(&at, e, 256)?);
                 println!("{}", row.table_line());
                 budgets.push(row);

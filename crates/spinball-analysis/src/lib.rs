@@ -80,8 +80,8 @@
 //!     .with_seed(1)
 //!     .run()?;
 //! println!("{estimate}");
-//! assert!(estimate.mean > 0.1 && estimate.mean < 0.3); // paper §IV: ≈ 0.20
-//! assert!(estimate.sem > 0.0 && estimate.n_ics == 64);
+//! assert!(estimate.mean() > 0.1 && estimate.mean() < 0.3); // paper §IV: ≈ 0.20
+//! assert!(estimate.sem() > 0.0 && estimate.n_ics() == 64);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!

@@ -194,13 +194,13 @@ fn planner_predicts_the_work_and_error_of_its_plan() {
         .ensemble(scene.clone().with_seed(22), 4 * plan.ics)
         .run_until(&plan.stop_rule(8))
         .unwrap();
-    eprintln!("stopped after {} ICs: {}", run.n_ics, run.stop);
-    assert_eq!(run.stop, StopReason::TotalErrorReached);
-    let ratio = run.n_ics as f64 / plan.ics as f64;
+    eprintln!("stopped after {} ICs: {}", run.n_ics(), run.stop());
+    assert_eq!(run.stop(), StopReason::TotalErrorReached);
+    let ratio = run.n_ics() as f64 / plan.ics as f64;
     assert!(
         (0.5..2.0).contains(&ratio),
         "ICs {} vs planned {}",
-        run.n_ics,
+        run.n_ics(),
         plan.ics
     );
     let work = run.total_collisions() as f64 / plan.predicted_ic_steps as f64;
@@ -208,8 +208,8 @@ fn planner_predicts_the_work_and_error_of_its_plan() {
     // The budget of the run actually done, from its own checkpoints.
     let t = plan.collisions;
     let measured = plan
-        .ensemble(scene.with_seed(22), run.n_ics)
-        .with_indices(0..run.n_ics);
+        .ensemble(scene.with_seed(22), run.n_ics())
+        .with_indices(0..run.n_ics());
     let (budget, _) = ErrorBudget::measure(&measured, &[t / 8, t / 4, t / 2, t]).unwrap();
     let ratio = budget.total.value / plan.predicted_error;
     eprintln!(
@@ -278,7 +278,7 @@ fn work_precision_points_and_refusals() {
     let budget = ErrorBudget::for_estimate(&scene, &est, 8).unwrap();
     assert_eq!(
         (budget.sem, budget.n_ics, budget.collisions),
-        (est.sem, 16, 400)
+        (est.sem(), 16, 400)
     );
     assert!(budget.total.value >= budget.sem);
 }

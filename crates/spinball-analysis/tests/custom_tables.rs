@@ -43,23 +43,23 @@ fn run<B: Boundary + Sync>(table: B, alpha: f64, seed: u64) -> LyapunovEstimate 
 }
 
 fn within_3_sem(a: &LyapunovEstimate, b: &LyapunovEstimate) {
-    let combined = a.sem.hypot(b.sem);
+    let combined = a.sem().hypot(b.sem());
     assert!(
-        (a.mean - b.mean).abs() < 3.0 * combined,
+        (a.mean() - b.mean()).abs() < 3.0 * combined,
         "{} vs {}: difference {} > 3 × {combined}",
-        a.mean,
-        b.mean,
-        (a.mean - b.mean).abs()
+        a.mean(),
+        b.mean(),
+        (a.mean() - b.mean()).abs()
     );
     let f = a
-        .chaotic_fraction_sem
-        .hypot(b.chaotic_fraction_sem)
+        .chaotic_fraction_sem()
+        .hypot(b.chaotic_fraction_sem())
         .max(1e-3);
     assert!(
-        (a.chaotic_fraction - b.chaotic_fraction).abs() < 3.0 * f,
+        (a.chaotic_fraction() - b.chaotic_fraction()).abs() < 3.0 * f,
         "chaotic fractions {} vs {}",
-        a.chaotic_fraction,
-        b.chaotic_fraction
+        a.chaotic_fraction(),
+        b.chaotic_fraction()
     );
 }
 
@@ -95,8 +95,8 @@ fn segment_stadium_matches_the_built_in_stadium() {
     for alpha in [0.0, 0.5] {
         let seg = run(segment_stadium(1.0), alpha, 11);
         let built = run(built_stadium(), alpha, 12);
-        assert_eq!(seg.table.shape, segment_stadium(1.0).shape());
-        assert_eq!(seg.table.name, "segments(4 walls)");
+        assert_eq!(seg.table().shape, segment_stadium(1.0).shape());
+        assert_eq!(seg.table().name, "segments(4 walls)");
         within_3_sem(&seg, &built);
     }
 }
@@ -113,13 +113,13 @@ fn segment_sinai_matches_the_built_in_sinai() {
 #[test]
 fn a_segment_table_gets_a_full_estimate() {
     let e = run(segment_stadium(1.0), 0.5, 3);
-    assert_eq!(e.n_ics, 480);
-    assert_eq!(e.stop, StopReason::Completed);
-    assert!(e.sem > 0.0 && e.mean.is_finite());
-    assert!(e.chaotic_fraction > 0.0 && e.chaotic_fraction <= 1.0);
-    assert!(e.collision_rate > 0.0 && e.wall_time_s > 0.0);
-    assert_eq!(e.sampler, Some(Sampler::Paper));
-    assert_eq!(e.method, Method::Tangent);
+    assert_eq!(e.n_ics(), 480);
+    assert_eq!(e.stop(), StopReason::Completed);
+    assert!(e.sem() > 0.0 && e.mean().is_finite());
+    assert!(e.chaotic_fraction() > 0.0 && e.chaotic_fraction() <= 1.0);
+    assert!(e.collision_rate() > 0.0 && e.wall_time_s() > 0.0);
+    assert_eq!(e.sampler(), Some(Sampler::Paper));
+    assert_eq!(e.method(), Method::Tangent);
 }
 
 #[test]
@@ -133,8 +133,8 @@ fn both_engines_give_the_same_trajectories_on_segment_tables() {
                 .with_method(method);
             let lanes = e.clone().with_engine(Engine::Lanes).run().unwrap();
             let scalar = e.with_engine(Engine::Scalar).run().unwrap();
-            assert_eq!(scalar.engine, Engine::Scalar);
-            for (l, s) in lanes.trajectories.iter().zip(&scalar.trajectories) {
+            assert_eq!(scalar.engine(), Engine::Scalar);
+            for (l, s) in lanes.trajectories().iter().zip(scalar.trajectories()) {
                 assert_eq!((l.index, l.collisions), (s.index, s.collisions));
                 assert_eq!(l.time.to_bits(), s.time.to_bits(), "time of IC {}", l.index);
                 let tol = 1e-9 * s.exponent.abs().max(1e-3);
@@ -157,9 +157,9 @@ fn explicit_states_run_like_drawn_ones_and_fail_alike() {
     assert_eq!(e.n_ics(), 40);
     let lanes = e.clone().run().unwrap();
     let scalar = e.clone().with_engine(Engine::Scalar).run().unwrap();
-    assert_eq!(lanes.sampler, None);
-    assert_eq!(lanes.n_ics, 40);
-    for (l, s) in lanes.trajectories.iter().zip(&scalar.trajectories) {
+    assert_eq!(lanes.sampler(), None);
+    assert_eq!(lanes.n_ics(), 40);
+    for (l, s) in lanes.trajectories().iter().zip(scalar.trajectories()) {
         assert_eq!(l.time.to_bits(), s.time.to_bits());
     }
     // Past the end of the list: a clear error, not a panic.
@@ -207,7 +207,7 @@ fn a_ring_too_thin_for_the_paper_draw_is_an_error_on_both_engines() {
     assert!(matches!(on_lanes, AnalysisError::NoRoom(_)), "{on_lanes}");
     assert_eq!(on_lanes, on_scalar);
     let drawn = e.with_sampler(Sampler::Microcanonical).run().unwrap();
-    assert!(drawn.mean.is_finite());
+    assert!(drawn.mean().is_finite());
 }
 
 /// The mushroom of `docs/tables/mushroom.toml`, every coordinate times `s`.
@@ -243,7 +243,7 @@ fn the_tangent_exponent_per_collision_does_not_depend_on_the_tables_scale() {
             .with_engine(engine)
             .run()
             .unwrap()
-            .per_collision_mean
+            .per_collision_mean()
     };
     let scale = 2f64.powi(20);
     for engine in [Engine::Lanes, Engine::Scalar] {

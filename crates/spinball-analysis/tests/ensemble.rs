@@ -22,26 +22,26 @@ fn stadium(alpha: f64) -> Ensemble<Stadium> {
 fn assert_same_bits(a: &LyapunovEstimate, b: &LyapunovEstimate) {
     let bits = |e: &LyapunovEstimate| {
         vec![
-            e.mean.to_bits(),
-            e.sem.to_bits(),
-            e.median.to_bits(),
-            e.std.to_bits(),
-            e.min.to_bits(),
-            e.max.to_bits(),
-            e.conditional_mean.map_or(u64::MAX, f64::to_bits),
-            e.chaotic_fraction.to_bits(),
-            e.chaotic_fraction_sem.to_bits(),
-            e.per_collision_mean.to_bits(),
-            e.collision_rate.to_bits(),
-            e.total_time.to_bits(),
-            e.n_ics,
-            e.first_index,
-            e.collisions_per_ic,
+            e.mean().to_bits(),
+            e.sem().to_bits(),
+            e.median().to_bits(),
+            e.std().to_bits(),
+            e.min().to_bits(),
+            e.max().to_bits(),
+            e.conditional_mean().map_or(u64::MAX, f64::to_bits),
+            e.chaotic_fraction().to_bits(),
+            e.chaotic_fraction_sem().to_bits(),
+            e.per_collision_mean().to_bits(),
+            e.collision_rate().to_bits(),
+            e.total_time().to_bits(),
+            e.n_ics(),
+            e.first_index(),
+            e.collisions_per_ic(),
         ]
     };
     assert_eq!(bits(a), bits(b));
-    assert_eq!(a.trajectories.len(), b.trajectories.len());
-    for (x, y) in a.trajectories.iter().zip(&b.trajectories) {
+    assert_eq!(a.trajectories().len(), b.trajectories().len());
+    for (x, y) in a.trajectories().iter().zip(b.trajectories()) {
         assert_eq!(x.index, y.index);
         assert_eq!(x.exponent.to_bits(), y.exponent.to_bits());
         assert_eq!(x.per_collision.to_bits(), y.per_collision.to_bits());
@@ -49,8 +49,20 @@ fn assert_same_bits(a: &LyapunovEstimate, b: &LyapunovEstimate) {
         assert_eq!(x.collisions, y.collisions);
     }
     assert_eq!(
-        (&a.table, a.alpha.to_bits(), &a.method, a.sampler, a.seed),
-        (&b.table, b.alpha.to_bits(), &b.method, b.sampler, b.seed)
+        (
+            &a.table(),
+            a.alpha().to_bits(),
+            &a.method(),
+            a.sampler(),
+            a.seed()
+        ),
+        (
+            &b.table(),
+            b.alpha().to_bits(),
+            &b.method(),
+            b.sampler(),
+            b.seed()
+        )
     );
 }
 
@@ -86,8 +98,8 @@ fn merged_splits_equal_one_run() {
     let merged = a.merge(&b).unwrap().merge(&c).unwrap();
     assert_same_bits(&merged, &whole);
     assert_eq!(
-        merged.wall_time_s,
-        a.wall_time_s + b.wall_time_s + c.wall_time_s
+        merged.wall_time_s(),
+        a.wall_time_s() + b.wall_time_s() + c.wall_time_s()
     );
 }
 
@@ -142,13 +154,13 @@ fn stop_rule_target_is_deterministic_and_equals_a_plain_run() {
     let e = stadium(0.5).with_ics(10_000);
     let rule = StopRule::new(16, 0.05);
     let first = e.run_until(&rule).unwrap();
-    assert_eq!(first.stop, StopReason::TargetReached);
-    assert!(first.sem <= 0.05 * first.mean.abs());
-    assert_eq!(first.n_ics % 16, 0, "stops at a batch boundary");
-    assert!(first.n_ics > 16, "needed more than one batch");
+    assert_eq!(first.stop(), StopReason::TargetReached);
+    assert!(first.sem() <= 0.05 * first.mean().abs());
+    assert_eq!(first.n_ics() % 16, 0, "stops at a batch boundary");
+    assert!(first.n_ics() > 16, "needed more than one batch");
     // the batch before did not reach the target
-    let before = e.clone().with_indices(0..first.n_ics - 16).run().unwrap();
-    assert!(before.sem > 0.05 * before.mean.abs());
+    let before = e.clone().with_indices(0..first.n_ics() - 16).run().unwrap();
+    assert!(before.sem() > 0.05 * before.mean().abs());
     // same schedule, same answer
     let again = e.run_until(&rule).unwrap();
     assert_same_bits(&first, &again);
@@ -163,15 +175,18 @@ fn stop_rule_min_ics_and_range() {
     // α = 0 is uniformly chaotic: a 50% target is met after the first batch
     // unless min_ics holds it back.
     let early = e.run_until(&StopRule::new(8, 0.5)).unwrap();
-    assert_eq!((early.stop, early.n_ics), (StopReason::TargetReached, 8));
+    assert_eq!(
+        (early.stop(), early.n_ics()),
+        (StopReason::TargetReached, 8)
+    );
     let held = e
         .run_until(&StopRule::new(8, 0.5).with_min_ics(20))
         .unwrap();
-    assert_eq!((held.stop, held.n_ics), (StopReason::TargetReached, 24));
+    assert_eq!((held.stop(), held.n_ics()), (StopReason::TargetReached, 24));
     // an unreachable target runs out of initial conditions (last batch partial)
     let exhausted = e.run_until(&StopRule::new(16, 0.0)).unwrap();
     assert_eq!(
-        (exhausted.stop, exhausted.n_ics),
+        (exhausted.stop(), exhausted.n_ics()),
         (StopReason::RangeExhausted, 40)
     );
 }
@@ -183,12 +198,12 @@ fn stop_rule_time_budget() {
     let est = e
         .run_until(&StopRule::new(4, 0.0).with_time_budget(Duration::ZERO))
         .unwrap();
-    assert_eq!((est.stop, est.n_ics), (StopReason::TimeBudget, 4));
+    assert_eq!((est.stop(), est.n_ics()), (StopReason::TimeBudget, 4));
     // the target wins when both hold after the same batch
     let est = e
         .run_until(&StopRule::new(4, 1.0).with_time_budget(Duration::ZERO))
         .unwrap();
-    assert_eq!(est.stop, StopReason::TargetReached);
+    assert_eq!(est.stop(), StopReason::TargetReached);
 }
 
 #[test]
@@ -220,20 +235,20 @@ fn estimate_carries_its_parameters() {
         .with_threads(Threads::Fixed(1))
         .run()
         .unwrap();
-    assert_eq!(est.table.name, "sinai:L=2,R=1");
-    assert_eq!(est.table.name.parse::<Table>().unwrap(), table);
-    assert_eq!(est.table.shape, table.shape());
-    assert_eq!(est.alpha, 2.0);
-    assert_eq!((est.method.name(), est.delta0()), ("fd", Some(1e-7)));
-    assert_eq!(est.sampler, Some(Sampler::Microcanonical));
-    assert_eq!((est.seed, est.first_index, est.n_ics), (9, 100, 4));
+    assert_eq!(est.table().name, "sinai:L=2,R=1");
+    assert_eq!(est.table().name.parse::<Table>().unwrap(), table);
+    assert_eq!(est.table().shape, table.shape());
+    assert_eq!(est.alpha(), 2.0);
+    assert_eq!((est.method().name(), est.delta0()), ("fd", Some(1e-7)));
+    assert_eq!(est.sampler(), Some(Sampler::Microcanonical));
+    assert_eq!((est.seed(), est.first_index(), est.n_ics()), (9, 100, 4));
     assert_eq!(est.indices(), 100..104);
-    assert_eq!(est.collisions_per_ic, 200);
+    assert_eq!(est.collisions_per_ic(), 200);
     assert_eq!(est.total_collisions(), 800);
-    assert_eq!(est.version, env!("CARGO_PKG_VERSION"));
-    assert_eq!(est.stop, StopReason::Completed);
-    assert!(est.wall_time_s >= 0.0);
-    assert!((est.collision_rate - 800.0 / est.total_time).abs() < 1e-12);
+    assert_eq!(est.version(), env!("CARGO_PKG_VERSION"));
+    assert_eq!(est.stop(), StopReason::Completed);
+    assert!(est.wall_time_s() >= 0.0);
+    assert!((est.collision_rate() - 800.0 / est.total_time()).abs() < 1e-12);
     assert_eq!(est.ftle().unwrap().len(), 4);
     assert!(est.to_string().contains("sinai:L=2,R=1"));
 }

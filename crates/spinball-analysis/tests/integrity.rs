@@ -207,9 +207,9 @@ fn shards_made_through_a_table_and_a_borrowed_one_merge() {
         serde_json::from_str(&serde_json::to_string(&borrowed).unwrap()).unwrap();
     let merged = merge_partials(vec![owned, borrowed], Some(0..10)).unwrap();
     let whole = ensemble(0..10).run().unwrap();
-    assert_eq!(merged.mean.to_bits(), whole.mean.to_bits());
-    assert_eq!(merged.sem.to_bits(), whole.sem.to_bits());
-    assert_eq!(merged.trajectories, whole.trajectories);
+    assert_eq!(merged.mean().to_bits(), whole.mean().to_bits());
+    assert_eq!(merged.sem().to_bits(), whole.sem().to_bits());
+    assert_eq!(merged.trajectories(), whole.trajectories());
 }
 
 /// A table of one's own, without a shape.
@@ -258,7 +258,7 @@ fn estimates_merge_by_geometry() {
         .with_collisions(300)
         .run()
         .unwrap();
-    assert_eq!(a.merge(&b).unwrap().n_ics, 8);
+    assert_eq!(a.merge(&b).unwrap().n_ics(), 8);
     let c = Ensemble::new(
         Stadium::new(1.0f64.next_up()).unwrap(),
         SpinLaw::new(0.5).unwrap(),
@@ -271,7 +271,7 @@ fn estimates_merge_by_geometry() {
     let e = a.merge(&c).unwrap_err().to_string();
     assert!(e.contains("table stadium:a=1 in one"), "{e}");
     // Overflowing statistics are an error, not `null` in a file.
-    let mut t = a.trajectories.clone();
+    let mut t = a.trajectories().to_vec();
     t[0].exponent = 1e308;
     t[1].exponent = -1e308;
     let prov = ensemble(0..4).provenance();

@@ -37,7 +37,7 @@ fn regular_orbits_at_half_spin_live_on_the_flat_walls() {
         Threads::All,
     )
     .unwrap();
-    let c = compare_classes(&estimate.trajectories, &profiles, CHAOS_THRESHOLD).unwrap();
+    let c = compare_classes(estimate.trajectories(), &profiles, CHAOS_THRESHOLD).unwrap();
     assert!(c.regular.n >= 10, "{c:?}");
     assert!(c.regular.flat_share.mean > 0.75, "{c:?}");
     assert!((c.chaotic.flat_share.mean - 0.37).abs() < 0.03, "{c:?}");

@@ -45,26 +45,26 @@ fn estimate(table: impl Into<Table>, alpha: f64, ics: u64, collisions: u64) -> L
 /// `ours` agrees with the paper's `value ± paper_sem` (rounded to
 /// `rounding`) within `max(4 · combined SEM, rounding)`.
 fn check(what: &str, ours: &LyapunovEstimate, value: f64, paper_sem: f64, rounding: f64) {
-    let sem = ours.sem.hypot(paper_sem);
+    let sem = ours.sem().hypot(paper_sem);
     let tol = (4.0 * sem).max(rounding);
-    let dev = ours.mean - value;
+    let dev = ours.mean() - value;
     eprintln!(
         "{what}: ours {:.4} ± {:.4} (median {:.4}, f_ch {:.3}, {} ICs × {} collisions, {:.1} s), paper {value}, deviation {:+.4} = {:+.1} σ, tolerance {tol:.4}",
-        ours.mean,
-        ours.sem,
-        ours.median,
-        ours.chaotic_fraction,
-        ours.n_ics,
-        ours.collisions_per_ic,
-        ours.wall_time_s,
+        ours.mean(),
+        ours.sem(),
+        ours.median(),
+        ours.chaotic_fraction(),
+        ours.n_ics(),
+        ours.collisions_per_ic(),
+        ours.wall_time_s(),
         dev,
         dev / sem,
     );
     assert!(
         dev.abs() <= tol,
         "{what}: {:.4} ± {:.4} vs paper {value} (tolerance {tol:.4})",
-        ours.mean,
-        ours.sem
+        ours.mean(),
+        ours.sem()
     );
 }
 
@@ -87,9 +87,9 @@ fn stadium_matches_the_paper() {
     // Chaotic fraction ≈ 90% at α = 1 (paper §VI, "~90%"; 5·10⁴ collisions
     // there, 10⁴ here): a loose check, ±5 points.
     assert!(
-        (ring.chaotic_fraction - 0.90).abs() < 0.05,
+        (ring.chaotic_fraction() - 0.90).abs() < 0.05,
         "stadium f_ch(1) = {}",
-        ring.chaotic_fraction
+        ring.chaotic_fraction()
     );
 }
 
@@ -117,9 +117,9 @@ fn sinai_matches_the_paper() {
     check("sinai α=1", &ring, 0.102, 0.0005, 0.0005);
     // ≈ 87% at α = 1 (paper §VI): loose, ±5 points.
     assert!(
-        (ring.chaotic_fraction - 0.87).abs() < 0.05,
+        (ring.chaotic_fraction() - 0.87).abs() < 0.05,
         "sinai f_ch(1) = {}",
-        ring.chaotic_fraction
+        ring.chaotic_fraction()
     );
 }
 
@@ -142,16 +142,19 @@ fn integrable_tables_have_no_chaos() {
             let est = estimate(table, alpha, 100, 20_000);
             eprintln!(
                 "{table} α={alpha}: λ = {:.2e} ± {:.1e}, max FTLE {:.2e}, f_ch {}",
-                est.mean, est.sem, est.max, est.chaotic_fraction
+                est.mean(),
+                est.sem(),
+                est.max(),
+                est.chaotic_fraction()
             );
-            assert!(est.mean < 1e-3, "{table} α={alpha}: λ = {}", est.mean);
+            assert!(est.mean() < 1e-3, "{table} α={alpha}: λ = {}", est.mean());
             assert!(
-                est.max < 0.5 * CHAOS_THRESHOLD,
+                est.max() < 0.5 * CHAOS_THRESHOLD,
                 "{table} α={alpha}: max FTLE {}",
-                est.max
+                est.max()
             );
-            assert_eq!(est.chaotic_fraction, 0.0, "{table} α={alpha}");
-            assert_eq!(est.conditional_mean, None);
+            assert_eq!(est.chaotic_fraction(), 0.0, "{table} α={alpha}");
+            assert_eq!(est.conditional_mean(), None);
         }
     }
 }
@@ -180,17 +183,20 @@ fn tangent_agrees_with_finite_differences() {
                 .with_collisions(collisions);
             let fd = e.clone().run().unwrap();
             let tangent = e.with_method(Method::Tangent).run().unwrap();
-            let diff = tangent.mean - fd.mean;
+            let diff = tangent.mean() - fd.mean();
             eprintln!(
                 "{table} α={alpha}, {collisions} collisions: FD {:.5} ± {:.5}, tangent {:.5} ± {:.5}, difference {diff:+.2e}",
-                fd.mean, fd.sem, tangent.mean, tangent.sem
+                fd.mean(),
+                fd.sem(),
+                tangent.mean(),
+                tangent.sem()
             );
             assert!(
-                diff.abs() <= fd.sem,
+                diff.abs() <= fd.sem(),
                 "{table} α={alpha}: tangent {} vs FD {} ± {}",
-                tangent.mean,
-                fd.mean,
-                fd.sem
+                tangent.mean(),
+                fd.mean(),
+                fd.sem()
             );
             diffs.push(diff);
         }

@@ -1,5 +1,5 @@
-//! Where results go: JSON (with full provenance), CSV (one row per α) and
-//! NPY (per-initial-condition exponents, for `numpy.load`).
+//! Where results go: JSON (a `spinball.lyapunov` document, with full
+//! provenance), CSV (one `SweepRow` per α) and NPY (per-initial-condition exponents, for `numpy.load`).
 
 use std::fs;
 use std::io::BufWriter;
@@ -8,10 +8,10 @@ use std::path::{Path, PathBuf};
 use clap::Args;
 use npyz::WriterBuilder;
 use spinball_analysis::estimators::PlusMinus;
-use spinball_analysis::report::csv_string;
+use spinball_analysis::report::{Document, LyapunovDocument, csv_string};
 use spinball_analysis::run::LyapunovEstimate;
 
-use crate::documents::{ResultDocument, write_json};
+use crate::documents::write_document;
 use crate::error::CliError;
 use crate::files::{check_creatable, check_writable};
 use crate::stdout::print;
@@ -114,16 +114,16 @@ impl OutputArgs {
                 "alpha", "lambda ± SEM", "median", "f_ch", "ICs", "time/s"
             );
             for e in estimates {
-                let lambda = PlusMinus::new(e.mean, e.sem);
+                let lambda = PlusMinus::new(e.mean(), e.sem());
                 let d = lambda.decimals().unwrap_or(6);
                 table.push_str(&format!(
                     "{:>10} {:>24} {:>12.d$} {:>7.3} {:>8} {:>9.2}\n",
-                    e.alpha,
+                    e.alpha(),
                     lambda.to_string(),
-                    e.median,
-                    e.chaotic_fraction,
-                    e.n_ics,
-                    e.wall_time_s
+                    e.median(),
+                    e.chaotic_fraction(),
+                    e.n_ics(),
+                    e.wall_time_s()
                 ));
             }
             print(&table)
@@ -137,21 +137,25 @@ impl OutputArgs {
     /// [`CliError::Failed`] for a file that cannot be written.
     pub fn write_files(&self, estimates: &[LyapunovEstimate]) -> Result<(), CliError> {
         if let Some(path) = &self.json {
-            write_json(path, &ResultDocument::new(estimates.to_vec()))?;
+            write_document(
+                path,
+                &Document::Lyapunov(LyapunovDocument::new(estimates.to_vec())),
+                false,
+            )?;
         }
         if let Some(path) = &self.csv {
             write_text(path, &csv_string(estimates).map_err(CliError::failed)?)?;
         }
         if let Some(path) = &self.npy {
-            let n = estimates.first().map_or(0, |e| e.trajectories.len());
-            if estimates.iter().any(|e| e.trajectories.len() != n) {
+            let n = estimates.first().map_or(0, |e| e.trajectories().len());
+            if estimates.iter().any(|e| e.trajectories().len() != n) {
                 return Err(CliError::Failed(
                     "--npy needs the same number of initial conditions at every α".into(),
                 ));
             }
             let values: Vec<f64> = estimates
                 .iter()
-                .flat_map(|e| e.trajectories.iter().map(|t| t.exponent))
+                .flat_map(|e| e.trajectories().iter().map(|t| t.exponent))
                 .collect();
             write_npy(path, &[estimates.len() as u64, n as u64], &values)?;
         }

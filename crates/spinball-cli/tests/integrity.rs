@@ -340,3 +340,42 @@ fn huge_thread_counts_and_bins_are_refused_before_anything_runs() {
     }
     assert!(!hist.exists());
 }
+
+/// A file of spinball 0.1.0 (written by its command line, kept with the
+/// analysis crate's tests).
+fn old_file(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join(format!("../spinball-analysis/tests/data/0.1.0/{name}"))
+}
+
+#[test]
+fn files_of_0_1_are_refused_by_merge_and_resume_naming_the_versions() {
+    let dir = scratch("old");
+    let old = old_file("partial.json");
+    let [a, _] = shards(&dir);
+    // The results written now carry the schema and the kind.
+    let v = read(&a);
+    assert_eq!(
+        (v["schema"].as_u64(), v["kind"].as_str()),
+        (Some(2), Some("spinball.lyapunov.partial"))
+    );
+    let needles = [s(&old), "spinball 0.1.0", "schema 1", "reads schema 2"];
+    expect(&["merge", s(&old), s(&a)], 2, &needles);
+    expect(&["merge", s(&a), s(&old)], 2, &needles);
+    // As a checkpoint to resume.
+    let checkpoint = dir.join("old.partial");
+    std::fs::copy(&old, &checkpoint).unwrap();
+    let args = lyapunov(&["--quiet", "--resume", "--checkpoint", s(&checkpoint)]);
+    expect(
+        &words(&args),
+        2,
+        &[s(&checkpoint), "spinball 0.1.0", "schema 1"],
+    );
+    // A finished 0.1.0 result is no shard: merge says what it is.
+    let result = old_file("result.json");
+    expect(
+        &["merge", s(&result)],
+        2,
+        &["its kind is `spinball.lyapunov`"],
+    );
+}

@@ -1,5 +1,6 @@
-//! CSV text built row by row, for the figure data that is not a list of
-//! [`SweepRow`](spinball_analysis::report::SweepRow)s (those have their own writer,
+//! CSV text built row by row, for the figure data that is not a result
+//! table ([`SweepRow`](spinball_analysis::report::SweepRow)s and
+//! per-trajectory rows are written through serde by
 //! [`write_csv`](spinball_analysis::report::write_csv)).
 //!
 //! Every figure writes its numbers next to its picture; the rules for a

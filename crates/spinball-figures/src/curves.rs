@@ -137,7 +137,7 @@ impl Curve {
 
     /// The α values.
     pub fn alphas(&self) -> Vec<f64> {
-        self.estimates.iter().map(|e| e.alpha).collect()
+        self.estimates.iter().map(|e| e.alpha()).collect()
     }
 
     /// `(α, value(estimate))` per point.
@@ -145,7 +145,10 @@ impl Curve {
         &self,
         value: impl Fn(&LyapunovEstimate) -> Measurement,
     ) -> Vec<(f64, Measurement)> {
-        self.estimates.iter().map(|e| (e.alpha, value(e))).collect()
+        self.estimates
+            .iter()
+            .map(|e| (e.alpha(), value(e)))
+            .collect()
     }
 
     /// `(α, value(estimate))` per point, for a value that can fail.
@@ -158,7 +161,7 @@ impl Curve {
     ) -> Result<Vec<(f64, Measurement)>, E> {
         self.estimates
             .iter()
-            .map(|e| Ok((e.alpha, value(e)?)))
+            .map(|e| Ok((e.alpha(), value(e)?)))
             .collect()
     }
 
@@ -182,8 +185,8 @@ impl Curve {
     /// For a curve without points (a sweep always has one).
     pub fn summary(&self) -> CurveSummary {
         let e = &self.estimates;
-        let point = |e: &LyapunovEstimate| (e.alpha, Measurement::lambda(e));
-        let by_mean = |a: &&LyapunovEstimate, b: &&LyapunovEstimate| a.mean.total_cmp(&b.mean);
+        let point = |e: &LyapunovEstimate| (e.alpha(), Measurement::lambda(e));
+        let by_mean = |a: &&LyapunovEstimate, b: &&LyapunovEstimate| a.mean().total_cmp(&b.mean());
         let (first, last) = (point(&e[0]), point(&e[e.len() - 1]));
         CurveSummary {
             label: self.label.clone(),
@@ -285,8 +288,7 @@ struct CurvesBody<'a, E: ?Sized> {
     extra: &'a E,
 }
 
-/// Write every curve's rows to `<stem>.csv` ([`spinball_analysis::report::CSV_HEADER`]
-/// columns) and the JSON document `<stem>.json`: the report's header, the
+/// Write every curve's rows to `<stem>.csv` (the columns of [`SweepRow`]) and the JSON document `<stem>.json`: the report's header, the
 /// total wall time, `series` (label, plan and points of each curve) and the
 /// fields of `extra` (a struct or map; `&()` for none).
 ///
@@ -304,7 +306,7 @@ pub fn write_curves<E: Serialize + ?Sized>(
         total_wall_time_s: curves
             .iter()
             .flat_map(|c| &c.estimates)
-            .map(|e| e.wall_time_s)
+            .map(|e| e.wall_time_s())
             .sum(),
         series: curves
             .iter()
@@ -359,12 +361,12 @@ mod tests {
         assert_eq!(curves.len(), 2);
         let c = &curves[0];
         assert_eq!((c.alphas(), c.rows.len()), (vec![0.0, 1.0], 2));
-        assert_eq!(c.rows[1].mean, c.estimates[1].mean);
-        assert_eq!(c.estimates[0].n_ics, 8);
-        let fraction = |e: &LyapunovEstimate| Measurement::new(e.chaotic_fraction, 0.0);
+        assert_eq!(c.rows[1].mean, c.estimates[1].mean());
+        assert_eq!(c.estimates[0].n_ics(), 8);
+        let fraction = |e: &LyapunovEstimate| Measurement::new(e.chaotic_fraction(), 0.0);
         assert_eq!(c.points(fraction)[1], (1.0, fraction(&c.estimates[1])));
         let fallible = |e: &LyapunovEstimate| {
-            if e.alpha == 0.0 {
+            if e.alpha() == 0.0 {
                 Ok(Measurement::lambda(e))
             } else {
                 Err("no")
@@ -382,7 +384,7 @@ mod tests {
         assert_eq!((s.first.0, s.last.0), (0.0, 1.0));
         assert_eq!(
             s.relative_drop,
-            1.0 - c.estimates[1].mean / c.estimates[0].mean
+            1.0 - c.estimates[1].mean() / c.estimates[0].mean()
         );
         assert!(s.min.1.value <= s.max.1.value);
         assert!(s.to_string().starts_with("a: lambda(0) = "), "{s}");

@@ -38,7 +38,8 @@
 //!   table beside the paper's Table I;
 //! - CSV tables of results that are not one
 //!   [`SweepRow`](spinball_analysis::report::SweepRow) per point
-//!   ([`trajectories_csv`], [`summary_csv`], [`spectra_csv`], ...).
+//!   ([`summary_csv`], [`spectra_csv`], ...; the per-trajectory table is
+//!   the result schema's, `spinball_analysis::report::trajectories_csv`).
 //!
 //! ```no_run
 //! use std::process::ExitCode;
@@ -105,7 +106,6 @@ pub use report::{Header, Report};
 pub use result_plots::{SpectrumPair, ftle_histogram, log_counts, spectrum_grid, spectrum_plot};
 pub use result_tables::{
     histograms_csv, q_pairs_csv, q_populations, spectra_csv, spectrum_pairs_csv, summary_csv,
-    trajectories_csv,
 };
 pub use scan::{Scan, ShareRow, curved_shares, run_scan, share_range, shares_csv, write_shares};
 pub use section_figure::{SECTION_COLUMNS, section_cloud, section_panel, section_rows, shell_spin};

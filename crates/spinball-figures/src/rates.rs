@@ -66,8 +66,8 @@ impl CurveRates {
     /// [`rate_summary`].
     pub fn of(curve: &Curve) -> Result<Self, BoxError> {
         let first = curve.estimates.first().ok_or("a curve without points")?;
-        let table: Table = first.table.name.parse()?;
-        let sampler = first.sampler.unwrap_or(Sampler::Paper);
+        let table: Table = first.table().name.parse()?;
+        let sampler = first.sampler().unwrap_or(Sampler::Paper);
         let nu = curve
             .try_points(|e| rate_summary(e).map(|r| Measurement::new(r.rate_mean, r.rate_sem)))?;
         let per_collision = curve.try_points(|e| {

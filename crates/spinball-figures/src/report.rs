@@ -27,7 +27,7 @@ use std::time::Instant;
 
 use npyz::WriterBuilder;
 use serde::Serialize;
-use spinball_analysis::report::{SweepRow, write_csv};
+use spinball_analysis::report::{SweepRow, csv_text};
 
 use crate::args::FigureArgs;
 use crate::csv::Csv;
@@ -141,17 +141,14 @@ impl Report {
         self.text(file, csv.as_str())
     }
 
-    /// Write `rows` to `file` as CSV ([`spinball_analysis::report::CSV_HEADER`]
-    /// columns).
+    /// Write `rows` to `file` as CSV (the columns of
+    /// [`SweepRow`], see [`csv_columns`](spinball_analysis::report::csv_columns)).
     ///
     /// # Errors
     /// [`FigureError::Io`].
     pub fn sweep_rows(&mut self, file: &str, rows: &[SweepRow]) -> Result<PathBuf, FigureError> {
-        let mut text = Vec::new();
-        write_csv(&mut text, rows).map_err(|source| io(Path::new(file), source))?;
-        let path = self.path(file)?;
-        std::fs::write(&path, text).map_err(|source| io(&path, source))?;
-        Ok(path)
+        let text = csv_text(rows).map_err(|e| io(Path::new(file), std::io::Error::other(e)))?;
+        self.text(file, &text)
     }
 
     /// Write `values` (row-major, of `shape`) to `file` as a float64 NPY
@@ -315,7 +312,7 @@ mod tests {
             std::fs::read_to_string(dir.join("rows.csv"))
                 .unwrap()
                 .trim_end(),
-            spinball_analysis::report::CSV_HEADER
+            spinball_analysis::report::csv_columns::<SweepRow>().join(",")
         );
         let s = r.summary();
         assert!(

@@ -62,11 +62,11 @@ pub fn ftle_histogram(estimate: &LyapunovEstimate) -> Result<HistogramPlot, Anal
     let ftle = e.ftle()?;
     let title = format!(
         "α = {}   (std {:.3}, f_ch {:.1} %)",
-        e.alpha,
-        e.std,
-        100.0 * e.chaotic_fraction
+        e.alpha(),
+        e.std(),
+        100.0 * e.chaotic_fraction()
     );
-    let median = Marker::new(format!("median {:.3}", e.median), e.median)
+    let median = Marker::new(format!("median {:.3}", e.median()), e.median())
         .color(RGBColor(0, 90, 200))
         .kind(LineKind::Dashed);
     let mut h = HistogramPlot::new(ftle.exponents().iter().copied())
@@ -77,9 +77,9 @@ pub fn ftle_histogram(estimate: &LyapunovEstimate) -> Result<HistogramPlot, Anal
         .y_label("probability density")
         .color(RGBColor(150, 170, 200))
         .legend(Legend::UpperLeft)
-        .marker(Marker::new(format!("mean {:.3}", e.mean), e.mean).color(RGBColor(0, 0, 0)))
+        .marker(Marker::new(format!("mean {:.3}", e.mean()), e.mean()).color(RGBColor(0, 0, 0)))
         .marker(median);
-    if let Some(cm) = e.conditional_mean {
+    if let Some(cm) = e.conditional_mean() {
         let marker = Marker::new(format!("cond. mean {cm:.3}"), cm)
             .color(RGBColor(0, 150, 60))
             .kind(LineKind::Dotted);

@@ -1,7 +1,7 @@
-//! CSV tables of analysis results that are not one
-//! [`SweepRow`] per point: every trajectory of some estimates, a compact
-//! per-estimate summary, Lyapunov spectra, `ΔQ` pairs, and named histograms
-//! bin by bin.
+//! CSV tables of analysis results that are neither one
+//! [`SweepRow`] per point nor one row per trajectory (those two are the
+//! result schema's, `spinball_analysis::report`): a compact per-estimate
+//! summary, Lyapunov spectra, `ΔQ` pairs, and named histograms bin by bin.
 //!
 //! Figures publish the numbers behind their pictures; the columns of these
 //! tables are fixed here, once, so every figure that writes, say, the
@@ -21,36 +21,10 @@
 use spinball_analysis::diagnostics::{DeltaQPopulation, PairClass, QPair, QPairStatistics};
 use spinball_analysis::estimators::Histogram;
 use spinball_analysis::report::SweepRow;
-use spinball_analysis::run::{LyapunovEstimate, SpectrumEstimate};
+use spinball_analysis::run::SpectrumEstimate;
 
 use crate::csv::{Csv, optional};
 use crate::result_plots::SpectrumPair;
-
-/// Every trajectory of `estimates`: α, initial-condition index, FTLE, the
-/// exponent per collision, flight time and collisions.
-pub fn trajectories_csv(estimates: &[LyapunovEstimate]) -> Csv {
-    let mut csv = Csv::new(&[
-        "alpha",
-        "index",
-        "ftle",
-        "per_collision",
-        "time",
-        "collisions",
-    ]);
-    for e in estimates {
-        for t in &e.trajectories {
-            csv.row(&[
-                &e.alpha,
-                &t.index,
-                &t.exponent,
-                &t.per_collision,
-                &t.time,
-                &t.collisions,
-            ]);
-        }
-    }
-    csv
-}
 
 /// One line per record with the distribution's summary: α, ICs,
 /// collisions, mean, SEM, median, std, conditional mean (empty if none),
@@ -187,25 +161,19 @@ mod tests {
     use spinball_geometry::Stadium;
 
     #[test]
-    fn trajectory_and_summary_tables() {
+    fn summary_table() {
         let e = Ensemble::new(Stadium::new(1.0).unwrap(), SpinLaw::new(0.5).unwrap())
             .with_ics(5)
             .with_collisions(300)
             .with_threads(Threads::Fixed(1))
             .run()
             .unwrap();
-        let t = trajectories_csv(std::slice::from_ref(&e));
-        assert_eq!(t.rows(), 5);
-        let line: Vec<&str> = t.as_str().lines().nth(3).unwrap().split(',').collect();
-        assert_eq!(line[..2], ["0.5", "2"]);
-        assert_eq!(line[2].parse::<f64>().unwrap(), e.trajectories[2].exponent);
-        assert_eq!(line[5], "300");
         let s = summary_csv(&sweep_rows(std::slice::from_ref(&e)).unwrap());
         let lines: Vec<&str> = s.as_str().lines().collect();
         assert!(lines[0].contains(",band_min,band_max,wall_s"));
         let fields: Vec<&str> = lines[1].split(',').collect();
         assert_eq!(fields.len(), 13);
-        assert_eq!(fields[3].parse::<f64>().unwrap(), e.mean);
+        assert_eq!(fields[3].parse::<f64>().unwrap(), e.mean());
     }
 
     #[test]

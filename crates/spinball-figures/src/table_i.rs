@@ -78,7 +78,7 @@ impl fmt::Display for TableIRow {
         let entries: Vec<String> = self
             .columns
             .iter()
-            .map(|e| format_mean_sem(e.mean, e.sem, 4))
+            .map(|e| format_mean_sem(e.mean(), e.sem(), 4))
             .collect();
         write!(
             f,
@@ -165,16 +165,16 @@ pub fn table_i_csv(rows: &[TableIRow]) -> Csv {
     ]);
     for r in rows {
         for e in &r.columns {
-            let paper = table_i_paper(&r.table, r.alpha, e.collisions_per_ic).unwrap_or_default();
+            let paper = table_i_paper(&r.table, r.alpha, e.collisions_per_ic()).unwrap_or_default();
             csv.row(&[
                 &r.table,
                 &r.alpha,
-                &e.collisions_per_ic,
-                &e.n_ics,
-                &e.mean,
-                &e.sem,
-                &e.median,
-                &e.chaotic_fraction,
+                &e.collisions_per_ic(),
+                &e.n_ics(),
+                &e.mean(),
+                &e.sem(),
+                &e.median(),
+                &e.chaotic_fraction(),
                 &paper,
             ]);
         }
@@ -188,7 +188,7 @@ pub fn table_i_csv(rows: &[TableIRow]) -> Csv {
 pub fn table_i_markdown(rows: &[TableIRow], ics: u64, seed: u64) -> String {
     let checkpoints: Vec<u64> = rows
         .first()
-        .map(|r| r.columns.iter().map(|e| e.collisions_per_ic).collect())
+        .map(|r| r.columns.iter().map(|e| e.collisions_per_ic()).collect())
         .unwrap_or_default();
     let header: Vec<String> = checkpoints.iter().map(u64::to_string).collect();
     let mut md = format!(
@@ -204,13 +204,13 @@ pub fn table_i_markdown(rows: &[TableIRow], ics: u64, seed: u64) -> String {
         let ours = |decimals: usize| -> Vec<String> {
             r.columns
                 .iter()
-                .map(|e| format_mean_sem(e.mean, e.sem, decimals))
+                .map(|e| format_mean_sem(e.mean(), e.sem(), decimals))
                 .collect()
         };
         let theirs: Vec<String> = r
             .columns
             .iter()
-            .map(|e| table_i_paper(&r.table, r.alpha, e.collisions_per_ic).unwrap_or("–".into()))
+            .map(|e| table_i_paper(&r.table, r.alpha, e.collisions_per_ic()).unwrap_or("–".into()))
             .collect();
         let _ = writeln!(
             md,
@@ -235,9 +235,9 @@ pub fn table_i_plot(rows: &[TableIRow], table: &str, title: &str) -> LinePlot {
     let rows: Vec<&TableIRow> = rows.iter().filter(|r| r.table == table).collect();
     for (k, r) in rows.iter().enumerate() {
         let diff = r.columns.iter().map(|e| {
-            let c = e.collisions_per_ic;
+            let c = e.collisions_per_ic();
             let reference = table_i_reference(table, r.alpha, c).unwrap_or(f64::NAN);
-            let m = Measurement::new(1e3 * (e.mean - reference), 1e3 * e.sem);
+            let m = Measurement::new(1e3 * (e.mean() - reference), 1e3 * e.sem());
             (c as f64, m)
         });
         let color = viridis(k as f64 / (rows.len().max(2) - 1) as f64 * 0.85);
@@ -291,13 +291,13 @@ impl From<&TableIRow> for TableIRecord {
                 .columns
                 .iter()
                 .map(|e| TableIColumn {
-                    collisions: e.collisions_per_ic,
-                    ics: e.n_ics,
-                    mean: e.mean,
-                    sem: e.sem,
-                    median: e.median,
-                    chaotic_fraction: e.chaotic_fraction,
-                    paper: table_i_paper(&r.table, r.alpha, e.collisions_per_ic),
+                    collisions: e.collisions_per_ic(),
+                    ics: e.n_ics(),
+                    mean: e.mean(),
+                    sem: e.sem(),
+                    median: e.median(),
+                    chaotic_fraction: e.chaotic_fraction(),
+                    paper: table_i_paper(&r.table, r.alpha, e.collisions_per_ic()),
                 })
                 .collect(),
             wall_time_s: r.wall_time_s,
@@ -354,14 +354,14 @@ mod tests {
         let e = &rows[0].columns[1];
         let ours = format!(
             "| Stadium | 0.5 | ours | {} | {} |",
-            format_mean_sem(rows[0].columns[0].mean, rows[0].columns[0].sem, 3),
-            format_mean_sem(e.mean, e.sem, 3)
+            format_mean_sem(rows[0].columns[0].mean(), rows[0].columns[0].sem(), 3),
+            format_mean_sem(e.mean(), e.sem(), 3)
         );
         assert!(md.contains(&ours), "{md}");
         let rec = TableIRecord::from(&rows[0]);
         assert_eq!(
             (rec.columns[1].collisions, rec.columns[1].mean),
-            (10_000, e.mean)
+            (10_000, e.mean())
         );
         assert_eq!(rec.columns[0].paper, None);
         assert_eq!(rec.columns[1].paper.as_deref(), Some("0.183(1)"));
@@ -402,9 +402,10 @@ mod tests {
             .with_seed(5)
             .with_threads(Threads::Fixed(1));
         let expected = convergence_estimates(&ensemble, &[300, 600]).unwrap();
-        let means = |e: &[LyapunovEstimate]| e.iter().map(|e| (e.mean, e.sem)).collect::<Vec<_>>();
+        let means =
+            |e: &[LyapunovEstimate]| e.iter().map(|e| (e.mean(), e.sem())).collect::<Vec<_>>();
         assert_eq!(means(&rows[3].columns), means(&expected));
-        assert_eq!(rows[3].columns[1].n_ics, 4);
+        assert_eq!(rows[3].columns[1].n_ics(), 4);
         use spinball_plot::Plot;
         assert!(table_i_grid(&rows, &tables, 4).validate().is_ok());
         assert!(table_i_rows(&args, &[("stadium:a=1", "S")], &[-1.0], 4, &[300]).is_err());

@@ -61,6 +61,8 @@ fn _spinball(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<results::PyLyapunovResult>()?;
     m.add_class::<results::PySpectrumResult>()?;
     m.add_function(wrap_pyfunction!(results::plus_minus, m)?)?;
+    m.add_function(wrap_pyfunction!(results::read_results, m)?)?;
+    m.add_function(wrap_pyfunction!(results::write_results, m)?)?;
     m.add_function(wrap_pyfunction!(runs::lyapunov, m)?)?;
     m.add_function(wrap_pyfunction!(runs::alpha_sweep, m)?)?;
     m.add_function(wrap_pyfunction!(runs::spectrum, m)?)?;

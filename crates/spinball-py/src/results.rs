@@ -1,12 +1,15 @@
 //! Result classes: `LyapunovResult` (an ensemble estimate of the largest
 //! exponent) and `SpectrumResult` (the ensemble spectrum), each with its
 //! fields as attributes, per-trajectory values as NumPy arrays, and
-//! `to_dict()` / `to_json()` equal to the Rust result's serde JSON.
+//! `to_dict()` / `to_json()` equal to the Rust result's serde JSON; and
+//! `read_results` / `write_results`, the result documents of the command
+//! line (one schema, `spinball_analysis::report::Document`).
 
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
+use spinball_analysis::report::{Document, LyapunovDocument};
 use spinball_analysis::run::{LyapunovEstimate, Provenance, SpectrumEstimate};
 
 use crate::errors::{analysis, value_error};
@@ -69,7 +72,7 @@ impl PyLyapunovResult {
         f: impl Fn(&spinball_analysis::run::TrajectoryStats) -> T,
     ) -> Py<PyArray1<T>> {
         self.inner
-            .trajectories
+            .trajectories()
             .iter()
             .map(f)
             .collect::<Vec<T>>()
@@ -83,107 +86,107 @@ impl PyLyapunovResult {
     /// Mean FTLE λ (per unit time): the estimate.
     #[getter]
     fn mean(&self) -> f64 {
-        self.inner.mean
+        self.inner.mean()
     }
     /// Standard error of the mean, std/√n_ics.
     #[getter]
     fn sem(&self) -> f64 {
-        self.inner.sem
+        self.inner.sem()
     }
     /// Median FTLE.
     #[getter]
     fn median(&self) -> f64 {
-        self.inner.median
+        self.inner.median()
     }
     /// Sample standard deviation of the FTLEs.
     #[getter]
     fn std(&self) -> f64 {
-        self.inner.std
+        self.inner.std()
     }
     /// Smallest FTLE.
     #[getter]
     fn min(&self) -> f64 {
-        self.inner.min
+        self.inner.min()
     }
     /// Largest FTLE.
     #[getter]
     fn max(&self) -> f64 {
-        self.inner.max
+        self.inner.max()
     }
     /// FTLE above which a trajectory counts as chaotic.
     #[getter]
     fn threshold(&self) -> f64 {
-        self.inner.threshold
+        self.inner.threshold()
     }
     /// Mean FTLE of the chaotic trajectories (`None` if there are none).
     #[getter]
     fn conditional_mean(&self) -> Option<f64> {
-        self.inner.conditional_mean
+        self.inner.conditional_mean()
     }
     /// Share of trajectories with FTLE > threshold.
     #[getter]
     fn chaotic_fraction(&self) -> f64 {
-        self.inner.chaotic_fraction
+        self.inner.chaotic_fraction()
     }
     /// Binomial standard error of the chaotic fraction.
     #[getter]
     fn chaotic_fraction_sem(&self) -> f64 {
-        self.inner.chaotic_fraction_sem
+        self.inner.chaotic_fraction_sem()
     }
     /// Mean exponent per collision.
     #[getter]
     fn per_collision_mean(&self) -> f64 {
-        self.inner.per_collision_mean
+        self.inner.per_collision_mean()
     }
     /// Collisions per unit time, Σ collisions / Σ time.
     #[getter]
     fn collision_rate(&self) -> f64 {
-        self.inner.collision_rate
+        self.inner.collision_rate()
     }
     /// Total flight time of all trajectories.
     #[getter]
     fn total_time(&self) -> f64 {
-        self.inner.total_time
+        self.inner.total_time()
     }
     /// Number of initial conditions.
     #[getter]
     fn n_ics(&self) -> u64 {
-        self.inner.n_ics
+        self.inner.n_ics()
     }
     /// Index of the first initial condition.
     #[getter]
     fn first_index(&self) -> u64 {
-        self.inner.first_index
+        self.inner.first_index()
     }
     /// Collisions per initial condition.
     #[getter]
     fn collisions_per_ic(&self) -> u64 {
-        self.inner.collisions_per_ic
+        self.inner.collisions_per_ic()
     }
     /// Wall-clock seconds spent computing.
     #[getter]
     fn wall_time_s(&self) -> f64 {
-        self.inner.wall_time_s
+        self.inner.wall_time_s()
     }
     /// Seed of the initial conditions.
     #[getter]
     fn seed(&self) -> u64 {
-        self.inner.seed
+        self.inner.seed()
     }
     /// Spec string of the table (`stadium:a=1`, `segments(6 walls)`).
     #[getter]
     fn table(&self) -> String {
-        self.inner.table.name.clone()
+        self.inner.table().name.clone()
     }
     /// Spin parameter α.
     #[getter]
     fn alpha(&self) -> f64 {
-        self.inner.alpha
+        self.inner.alpha()
     }
     /// `"fd"` or `"tangent"`.
     #[getter]
     fn method(&self) -> &'static str {
-        self.inner.method.name()
+        self.inner.method().name()
     }
     /// Initial separation of the finite-difference method (`None` for tangent).
     #[getter]
@@ -193,23 +196,23 @@ impl PyLyapunovResult {
     /// `"paper"`, `"microcanonical"`, or `None` for explicit initial states.
     #[getter]
     fn sampler(&self) -> Option<&'static str> {
-        self.inner.sampler.map(|s| s.name())
+        self.inner.sampler().map(|s| s.name())
     }
     /// `"lanes"` or `"scalar"`: the engine that ran the trajectories.
     #[getter]
     fn engine(&self) -> &'static str {
-        self.inner.engine.name()
+        self.inner.engine().name()
     }
     /// Version of the Rust analysis crate that computed the result.
     #[getter]
     fn version(&self) -> String {
-        self.inner.version.clone()
+        self.inner.version().to_string()
     }
     /// Why the run stopped: `completed`, `target_reached`, `time_budget` or
     /// `range_exhausted`.
     #[getter]
     fn stop(&self) -> &'static str {
-        self.inner.stop.name()
+        self.inner.stop().name()
     }
     /// Relative standard error sem/|mean|.
     #[getter]
@@ -248,17 +251,17 @@ impl PyLyapunovResult {
     fn provenance<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let e = &self.inner;
         let p = Provenance::new(
-            e.table.clone(),
-            e.alpha,
-            e.method,
-            e.sampler,
-            e.seed,
-            e.collisions_per_ic,
-            e.threshold,
-            e.engine,
+            e.table().clone(),
+            e.alpha(),
+            e.method(),
+            e.sampler(),
+            e.seed(),
+            e.collisions_per_ic(),
+            e.threshold(),
+            e.engine(),
         );
         let d = loads(py, &json(&p, None)?)?;
-        d.set_item("version", &e.version)?;
+        d.set_item("version", e.version())?;
         Ok(d)
     }
     /// The per-trajectory exponents as an `FtleDistribution`.
@@ -467,4 +470,37 @@ impl PySpectrumResult {
             m[4]
         )
     }
+}
+
+/// The Lyapunov results of a result document (the `--json` file of
+/// `spinball lyapunov`, `ftle` or `merge`, or `write_results` text), one
+/// per α. Raises `ValueError` naming the schema found and the schema this
+/// version reads for a file of another version (spinball 0.1 results
+/// load), and for text that is not such a document.
+#[pyfunction]
+pub fn read_results(text: &str) -> PyResult<Vec<PyLyapunovResult>> {
+    let doc = Document::from_json(text)
+        .and_then(Document::into_lyapunov)
+        .map_err(|e| value_error(e.to_string()))?;
+    Ok(doc
+        .points
+        .into_iter()
+        .map(|inner| PyLyapunovResult { inner })
+        .collect())
+}
+
+/// `results` as a result document (kind `spinball.lyapunov`, the format
+/// of `spinball lyapunov --json`): one line, or indented if `pretty`.
+#[pyfunction]
+#[pyo3(signature = (results, pretty = false))]
+pub fn write_results(results: Vec<PyRef<'_, PyLyapunovResult>>, pretty: bool) -> PyResult<String> {
+    let doc = Document::Lyapunov(LyapunovDocument::new(
+        results.iter().map(|r| r.inner.clone()).collect(),
+    ));
+    let text = if pretty {
+        doc.to_json_pretty()
+    } else {
+        doc.to_json()
+    };
+    text.map_err(|e| PyRuntimeError::new_err(format!("cannot serialise the results: {e}")))
 }

@@ -124,11 +124,11 @@ fn event_dict<'py>(py: Python<'py>, event: &RunEvent<'_>) -> PyResult<Bound<'py,
             d.set_item("event", "finished")?;
             d.set_item("point", point)?;
             d.set_item("points", points)?;
-            d.set_item("alpha", estimate.alpha)?;
-            d.set_item("ics_done", estimate.n_ics)?;
-            d.set_item("mean", estimate.mean)?;
-            d.set_item("sem", estimate.sem)?;
-            d.set_item("elapsed_s", estimate.wall_time_s)?;
+            d.set_item("alpha", estimate.alpha())?;
+            d.set_item("ics_done", estimate.n_ics())?;
+            d.set_item("mean", estimate.mean())?;
+            d.set_item("sem", estimate.sem())?;
+            d.set_item("elapsed_s", estimate.wall_time_s())?;
         }
         _ => d.set_item("event", "other")?,
     }

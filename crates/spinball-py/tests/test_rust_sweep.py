@@ -22,18 +22,23 @@ import spinball as sb
 ROOT = Path(__file__).resolve().parents[3]
 
 
-def run_sweep(tmp_path, args):
-    out = tmp_path / "sweep.json"
+def run_spinball(tmp_path, command, args):
+    """The text of the --json file of `spinball COMMAND ARGS`."""
+    out = tmp_path / f"{command}.json"
     exe = os.environ.get("SPINBALL")
     if exe:
-        cmd = [exe, "sweep"]
+        cmd = [exe, command]
     elif shutil.which("cargo") and (ROOT / "crates" / "spinball-cli").is_dir():
-        cmd = ["cargo", "run", "--release", "-p", "spinball-cli", "--quiet", "--", "sweep"]
+        cmd = ["cargo", "run", "--release", "-p", "spinball-cli", "--quiet", "--", command]
     else:
         pytest.skip("neither SPINBALL nor cargo and the repository are available")
     subprocess.run(cmd + args + ["--json", str(out)], cwd=ROOT, check=True,
                    stdout=subprocess.DEVNULL)
-    return json.loads(out.read_text())
+    return out.read_text()
+
+
+def run_sweep(tmp_path, args):
+    return json.loads(run_spinball(tmp_path, "sweep", args))
 
 
 CASES = [
@@ -50,6 +55,7 @@ def test_python_equals_spinball_sweep(tmp_path, spec, alphas, method, sampler, s
         "--ics", str(ics), "--collisions", str(collisions), "--method", method,
         "--seed", str(seed), "--sampler", sampler,
     ])
+    assert (doc["schema"], doc["kind"]) == (2, "spinball.sweep")
     assert (doc["table"], doc["method"], doc["sampler"], doc["seed"]) == (spec, method, sampler, seed)
     results = sb.alpha_sweep(spec, alphas, ics=ics, collisions=collisions, method=method,
                              sampler=sampler, seed=seed)
@@ -65,3 +71,36 @@ def test_python_equals_spinball_sweep(tmp_path, spec, alphas, method, sampler, s
         assert ours == theirs  # exact float equality, every field
         assert doc["delta0"] == r.delta0 and doc["threshold"] == r.threshold
         assert doc["version"] == r.version
+
+
+def test_read_results_reads_spinball_lyapunov_bit_for_bit(tmp_path):
+    """`read_results` reads the command line's result document, every
+    number as written, and `write_results` writes it back."""
+    text = run_spinball(tmp_path, "lyapunov", [
+        "--table", "stadium:a=1", "--alpha", "0.3,0.7", "--ics", "32",
+        "--collisions", "800", "--method", "fd", "--seed", "4", "--quiet",
+    ])
+    results = sb.read_results(text)
+    file = json.loads(text)
+    assert (file["schema"], file["kind"]) == (2, "spinball.lyapunov")
+    assert [r.alpha for r in results] == [0.3, 0.7]
+    for r, point in zip(results, file["points"]):
+        assert r.to_dict() == point  # exact float equality, every field
+        assert list(r.exponents) == [t["exponent"] for t in point["trajectories"]]
+    again = sb.read_results(sb.write_results(results))
+    assert again == results
+    doc = json.loads(sb.write_results(results, pretty=True))
+    assert (doc["schema"], doc["kind"], len(doc["points"])) == (2, "spinball.lyapunov", 2)
+
+
+def test_read_results_refuses_other_versions_and_kinds():
+    old = (ROOT / "crates" / "spinball-analysis" / "tests" / "data" / "0.1.0").resolve()
+    with pytest.raises(ValueError, match="spinball 0.1.0 with result schema 1"):
+        sb.read_results((old / "partial.json").read_text())
+    # A finished result of 0.1.0 has today's fields and still loads.
+    (r,) = sb.read_results((old / "result.json").read_text())
+    assert (r.version, r.n_ics, r.alpha) == ("0.1.0", 4, 0.5)
+    with pytest.raises(ValueError, match="not a `spinball.lyapunov`"):
+        sb.read_results('{"schema": 2, "kind": "spinball.sweep", "table": "circle", '
+                        '"method": "fd", "sampler": "paper", "seed": 1, "delta0": 1e-7, '
+                        '"threshold": 0.01, "version": "0.2.0", "points": []}')

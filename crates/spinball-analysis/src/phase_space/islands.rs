@@ -162,7 +162,7 @@ pub struct ClassComparison {
 /// let estimate = ensemble.run()?;
 /// let billiard = Billiard::new(Stadium::new(1.0)?, SpinLaw::new(0.5)?);
 /// let profiles = trajectory_profiles(&billiard, Sampler::Paper, 7, 0..40, 2_000, Threads::All)?;
-/// let split = compare_classes(&estimate.trajectories, &profiles, 0.01)?;
+/// let split = compare_classes(estimate.trajectories(), &profiles, 0.01)?;
 /// assert_eq!(split.regular.n + split.chaotic.n, 40);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```

@@ -237,9 +237,9 @@ fn check_checkpoints(checkpoints: &[u64]) -> Result<(), AnalysisError> {
 ///     .with_seed(3)
 ///     .with_engine(Engine::Scalar); // one nested run
 /// let columns = convergence_estimates(&ensemble, &[1_000, 4_000])?;
-/// assert_eq!(columns[1].collisions_per_ic, 4_000);
+/// assert_eq!(columns[1].collisions_per_ic(), 4_000);
 /// let direct = ensemble.with_collisions(1_000).run()?;
-/// assert_eq!(columns[0].mean, direct.mean); // bitwise
+/// assert_eq!(columns[0].mean(), direct.mean()); // bitwise
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 ///

@@ -83,7 +83,7 @@ impl MethodBias {
     ///     .with_seed(4);
     /// let (bias, fd, tangent) = MethodBias::measure(&ensemble, 1e-7)?;
     /// // Paired: far below the spread of either mean.
-    /// assert!(bias.difference.sem < 0.1 * fd.sem.min(tangent.sem));
+    /// assert!(bias.difference.sem < 0.1 * fd.sem().min(tangent.sem()));
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     ///

@@ -1,38 +1,22 @@
-//! # The sweep document
+//! The sweep document: the settings of `spinball sweep` and one point
+//! per α, rewritten after every point so that a long sweep leaves its
+//! finished points behind.
 //!
-//! The JSON document of `spinball sweep` (the machine interface for
-//! scripts): the settings and one point per α. The command rewrites it
-//! after every point so that a long sweep leaves its finished points behind.
-//!
-//! Scripts read this format, so it is a fixed, typed record
-//! ([`SweepDocument`], [`SweepPoint`]), serialised with serde (feature
-//! `serde`):
-//!
-//! ```json
-//! {"table": "stadium:a=1", "method": "fd", "sampler": "paper", "seed": 1,
-//!  "delta0": 1e-7, "threshold": 0.01, "version": "0.1.0",
-//!  "points": [{"alpha": 0.5, "mean": 0.18, "sem": 0.002, "median": 0.2,
-//!              "chaotic_fraction": 0.9, "n_ics": 1000, "n_collisions": 10000,
-//!              "wall_time_s": 1.1, "std": 0.05, "conditional_mean": 0.2,
-//!              "collision_rate": 1.2, "stop": "completed",
-//!              "error_budget": {"sem": 0.002, "finite_time_bias": 1e-4, "regime": "1/T",
-//!                               "method_bias": 2e-5, "total": 0.0021, ...}}]}
-//! ```
-//!
-//! `n_collisions` is the number of collisions per initial condition,
-//! `wall_time_s` the time spent on that point; exponents are per unit time.
+//! Documented in the group docs (`report/mod.rs`), section "Documents".
 
 use std::fmt::Display;
 
 use spinball_core::Sampler;
 
+use super::names::MethodName;
 use super::rows::BudgetRow;
 use crate::estimators::{CHAOS_THRESHOLD, Method};
-use crate::run::LyapunovEstimate;
+use crate::run::{LyapunovEstimate, StopReason};
 
 /// One α of a sweep. Serialisable with the `serde` feature.
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub struct SweepPoint {
     /// Spin parameter.
     pub alpha: f64,
@@ -57,10 +41,13 @@ pub struct SweepPoint {
     /// Collisions per unit time over the ensemble.
     pub collision_rate: f64,
     /// Why the point stopped.
-    pub stop: String,
+    pub stop: StopReason,
     /// The point's error budget (SEM, finite-time and method bias, total),
     /// if it was measured.
-    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
     pub error_budget: Option<BudgetRow>,
 }
 
@@ -78,7 +65,7 @@ impl From<&LyapunovEstimate> for SweepPoint {
             std: e.std,
             conditional_mean: e.conditional_mean,
             collision_rate: e.collision_rate,
-            stop: e.stop.name().to_string(),
+            stop: e.stop,
             error_budget: None,
         }
     }
@@ -87,14 +74,15 @@ impl From<&LyapunovEstimate> for SweepPoint {
 /// The whole document: settings and the points so far. Serialisable with
 /// the `serde` feature.
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub struct SweepDocument {
     /// Table spec.
     pub table: String,
     /// `fd` or `tangent`.
-    pub method: String,
+    pub method: MethodName,
     /// `paper` or `microcanonical`.
-    pub sampler: String,
+    pub sampler: Sampler,
     /// Seed of the initial conditions.
     pub seed: u64,
     /// Initial separation of the finite-difference method (`None`: tangent).
@@ -110,11 +98,12 @@ pub struct SweepDocument {
 impl SweepDocument {
     /// An empty document: a sweep on `table` (its spec) by `method`, from
     /// `sampler`'s initial conditions of `seed`.
+    #[must_use]
     pub fn new(table: &impl Display, method: Method, sampler: Sampler, seed: u64) -> Self {
         SweepDocument {
             table: table.to_string(),
-            method: method.name().to_string(),
-            sampler: sampler.name().to_string(),
+            method: method.into(),
+            sampler,
             seed,
             delta0: match method {
                 Method::FiniteDifference { delta0 } => Some(delta0),

@@ -155,8 +155,8 @@ impl<B: Boundary + Sync> Ensemble<B> {
     ///     .with_method(Method::Tangent)
     ///     .with_seed(1)
     ///     .run()?;
-    /// assert!(estimate.mean > 0.1 && estimate.mean < 0.3); // paper §IV: ≈ 0.20
-    /// assert!(estimate.sem > 0.0 && estimate.n_ics == 64);
+    /// assert!(estimate.mean() > 0.1 && estimate.mean() < 0.3); // paper §IV: ≈ 0.20
+    /// assert!(estimate.sem() > 0.0 && estimate.n_ics() == 64);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     ///
@@ -183,8 +183,8 @@ impl<B: Boundary + Sync> Ensemble<B> {
     ///     .with_ics(1_000)
     ///     .with_collisions(2_000);
     /// let estimate = ensemble.run_until(&StopRule::new(8, 0.02))?;
-    /// assert_eq!(estimate.stop, StopReason::TargetReached);
-    /// assert!(estimate.sem <= 0.02 * estimate.mean);
+    /// assert_eq!(estimate.stop(), StopReason::TargetReached);
+    /// assert!(estimate.sem() <= 0.02 * estimate.mean());
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     ///
@@ -213,10 +213,10 @@ impl<B: Boundary + Sync> Ensemble<B> {
     ///     RunEvent::Batch(_) => Control::Stop,
     ///     _ => Control::Continue,
     /// })?;
-    /// assert_eq!(estimate.stop, StopReason::Cancelled);
+    /// assert_eq!(estimate.stop(), StopReason::Cancelled);
     /// // A batch of about a twentieth of the range, in whole lane chunks
     /// // (96 initial conditions) per thread.
-    /// assert_eq!(estimate.n_ics, 96);
+    /// assert_eq!(estimate.n_ics(), 96);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     ///

@@ -45,9 +45,9 @@ use crate::estimators::{CHAOS_THRESHOLD, LyapunovOptions, Method};
 ///     .with_collisions(2_000)
 ///     .with_method(Method::Tangent)
 ///     .run()?;
-/// assert_eq!(estimate.n_ics, 16);
-/// assert_eq!(estimate.engine, Engine::Lanes);
-/// assert!(estimate.mean.is_finite() && estimate.sem >= 0.0);
+/// assert_eq!(estimate.n_ics(), 16);
+/// assert_eq!(estimate.engine(), Engine::Lanes);
+/// assert!(estimate.mean().is_finite() && estimate.sem() >= 0.0);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]

@@ -220,7 +220,7 @@
 //!     }
 //! })?;
 //! assert_eq!(estimates.len(), 2);
-//! assert!(estimates.iter().all(|e| e.sem <= 0.05 * e.mean));
+//! assert!(estimates.iter().all(|e| e.sem() <= 0.05 * e.mean()));
 //! print!("{}", spinball_analysis::report::csv_string(&estimates)?);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
@@ -274,4 +274,4 @@ pub use shard::Shard;
 pub use spectrum_ensemble::{SpectrumEstimate, spectrum_ensemble};
 pub use starts::Starts;
 pub use stop_rule::StopRule;
-pub use trajectory::{TrajectoryStats, ftle_trajectories, trajectories_csv, trajectory_ftle};
+pub use trajectory::{TrajectoryStats, ftle_trajectories, trajectory_ftle};

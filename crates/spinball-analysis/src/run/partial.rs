@@ -300,6 +300,19 @@ pub enum MergeError {
     Estimate(#[from] AnalysisError),
 }
 
+impl From<RunDifference> for MergeError {
+    /// A field that differs is [`MergeError::DifferentRuns`]; a table
+    /// without a shape is [`MergeError::Table`].
+    fn from(e: RunDifference) -> Self {
+        match e {
+            RunDifference::Field { what, first, other } => {
+                MergeError::DifferentRuns { what, first, other }
+            }
+            e => MergeError::Table(e),
+        }
+    }
+}
+
 /// Join the pieces of a run (shards, in any order) into the estimate over
 /// `expected` (the whole range the pieces should tile; `None`: the union of
 /// their ranges, which must then be contiguous). The result is bitwise that
@@ -320,13 +333,7 @@ pub fn merge_partials(
             indices: p.indices.clone(),
             source,
         })?;
-        match first.provenance.difference(&p.provenance) {
-            Ok(()) => {}
-            Err(RunDifference::Field { what, first, other }) => {
-                return Err(MergeError::DifferentRuns { what, first, other });
-            }
-            Err(e) => return Err(MergeError::Table(e)),
-        }
+        first.provenance.difference(&p.provenance)?;
         if p.version != first.version {
             return Err(MergeError::DifferentRuns {
                 what: "version",
@@ -402,7 +409,7 @@ impl<B: Boundary + Sync> Ensemble<B> {
     /// // ...and resumed: the same numbers as one uninterrupted run.
     /// let done = ensemble.run_partial(Some(part), &mut spinball_analysis::run::Silent)?;
     /// let resumed = merge_partials(vec![done], None)?;
-    /// assert_eq!(resumed.mean.to_bits(), ensemble.run()?.mean.to_bits());
+    /// assert_eq!(resumed.mean().to_bits(), ensemble.run()?.mean().to_bits());
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     ///

@@ -70,58 +70,58 @@ impl fmt::Display for StopReason {
 #[non_exhaustive]
 pub struct LyapunovEstimate {
     /// The estimate: mean of the per-trajectory FTLEs.
-    pub mean: f64,
+    pub(crate) mean: f64,
     /// Standard error of the mean, `std / √n_ics`.
-    pub sem: f64,
+    pub(crate) sem: f64,
     /// Median FTLE (robust against the regular islands near zero).
-    pub median: f64,
+    pub(crate) median: f64,
     /// Sample standard deviation of the FTLEs (`n − 1`).
-    pub std: f64,
+    pub(crate) std: f64,
     /// Smallest FTLE.
-    pub min: f64,
+    pub(crate) min: f64,
     /// Largest FTLE.
-    pub max: f64,
+    pub(crate) max: f64,
     /// Chaos threshold used below (the paper: 0.01).
-    pub threshold: f64,
+    pub(crate) threshold: f64,
     /// Mean FTLE of the chaotic trajectories (FTLE > `threshold`); `None`
     /// if there are none (an integrable table).
-    pub conditional_mean: Option<f64>,
+    pub(crate) conditional_mean: Option<f64>,
     /// Share of trajectories with FTLE > `threshold`.
-    pub chaotic_fraction: f64,
+    pub(crate) chaotic_fraction: f64,
     /// Binomial standard error of `chaotic_fraction`.
-    pub chaotic_fraction_sem: f64,
+    pub(crate) chaotic_fraction_sem: f64,
     /// Mean over trajectories of the per-collision exponent `Σ ln / collisions`.
-    pub per_collision_mean: f64,
+    pub(crate) per_collision_mean: f64,
     /// Collision rate `ν = Σ collisions / Σ time` over the ensemble.
-    pub collision_rate: f64,
+    pub(crate) collision_rate: f64,
     /// Total flight time of all reference trajectories.
-    pub total_time: f64,
+    pub(crate) total_time: f64,
     /// Number of initial conditions.
-    pub n_ics: u64,
+    pub(crate) n_ics: u64,
     /// Index of the first initial condition (they run `first_index..first_index + n_ics`).
-    pub first_index: u64,
+    pub(crate) first_index: u64,
     /// Collisions per initial condition.
-    pub collisions_per_ic: u64,
+    pub(crate) collisions_per_ic: u64,
     /// Wall-clock seconds spent computing (summed over merged parts).
-    pub wall_time_s: f64,
+    pub(crate) wall_time_s: f64,
     /// Seed of the initial conditions ([`spinball_core::ic_rng`]).
-    pub seed: u64,
+    pub(crate) seed: u64,
     /// The table (its shape, if it has one, and a name).
-    pub table: TableRecord,
+    pub(crate) table: TableRecord,
     /// Spin parameter α.
-    pub alpha: f64,
+    pub(crate) alpha: f64,
     /// How the exponent was measured (with δ0 for finite differences).
-    pub method: Method,
+    pub(crate) method: Method,
     /// How initial conditions were drawn (`None`: explicit states).
-    pub sampler: Option<Sampler>,
+    pub(crate) sampler: Option<Sampler>,
     /// Version of `spinball-analysis` that computed it.
-    pub version: String,
+    pub(crate) version: String,
     /// The implementation that ran the trajectories.
-    pub engine: Engine,
+    pub(crate) engine: Engine,
     /// Why the run stopped.
-    pub stop: StopReason,
+    pub(crate) stop: StopReason,
     /// Per-trajectory results, in index order.
-    pub trajectories: Vec<TrajectoryStats>,
+    pub(crate) trajectories: Vec<TrajectoryStats>,
 }
 
 impl LyapunovEstimate {
@@ -297,6 +297,163 @@ impl LyapunovEstimate {
         merged.stop = second.stop;
         merged.recompute()?;
         Ok(merged)
+    }
+
+    /// The estimate: mean of the per-trajectory FTLEs.
+    #[must_use]
+    pub fn mean(&self) -> f64 {
+        self.mean
+    }
+
+    /// Standard error of the mean, `std / √n_ics`.
+    #[must_use]
+    pub fn sem(&self) -> f64 {
+        self.sem
+    }
+
+    /// Median FTLE (robust against the regular islands near zero).
+    #[must_use]
+    pub fn median(&self) -> f64 {
+        self.median
+    }
+
+    /// Sample standard deviation of the FTLEs (`n − 1`).
+    #[must_use]
+    pub fn std(&self) -> f64 {
+        self.std
+    }
+
+    /// Smallest FTLE.
+    #[must_use]
+    pub fn min(&self) -> f64 {
+        self.min
+    }
+
+    /// Largest FTLE.
+    #[must_use]
+    pub fn max(&self) -> f64 {
+        self.max
+    }
+
+    /// Chaos threshold used below (the paper: 0.01).
+    #[must_use]
+    pub fn threshold(&self) -> f64 {
+        self.threshold
+    }
+
+    /// Mean FTLE of the chaotic trajectories (FTLE > `threshold`); `None`
+    /// if there are none (an integrable table).
+    #[must_use]
+    pub fn conditional_mean(&self) -> Option<f64> {
+        self.conditional_mean
+    }
+
+    /// Share of trajectories with FTLE > `threshold`.
+    #[must_use]
+    pub fn chaotic_fraction(&self) -> f64 {
+        self.chaotic_fraction
+    }
+
+    /// Binomial standard error of `chaotic_fraction`.
+    #[must_use]
+    pub fn chaotic_fraction_sem(&self) -> f64 {
+        self.chaotic_fraction_sem
+    }
+
+    /// Mean over trajectories of the per-collision exponent `Σ ln / collisions`.
+    #[must_use]
+    pub fn per_collision_mean(&self) -> f64 {
+        self.per_collision_mean
+    }
+
+    /// Collision rate `ν = Σ collisions / Σ time` over the ensemble.
+    #[must_use]
+    pub fn collision_rate(&self) -> f64 {
+        self.collision_rate
+    }
+
+    /// Total flight time of all reference trajectories.
+    #[must_use]
+    pub fn total_time(&self) -> f64 {
+        self.total_time
+    }
+
+    /// Number of initial conditions.
+    #[must_use]
+    pub fn n_ics(&self) -> u64 {
+        self.n_ics
+    }
+
+    /// Index of the first initial condition (they run `first_index..first_index + n_ics`).
+    #[must_use]
+    pub fn first_index(&self) -> u64 {
+        self.first_index
+    }
+
+    /// Collisions per initial condition.
+    #[must_use]
+    pub fn collisions_per_ic(&self) -> u64 {
+        self.collisions_per_ic
+    }
+
+    /// Wall-clock seconds spent computing (summed over merged parts).
+    #[must_use]
+    pub fn wall_time_s(&self) -> f64 {
+        self.wall_time_s
+    }
+
+    /// Seed of the initial conditions ([`spinball_core::ic_rng`]).
+    #[must_use]
+    pub fn seed(&self) -> u64 {
+        self.seed
+    }
+
+    /// The table (its shape, if it has one, and a name).
+    #[must_use]
+    pub fn table(&self) -> &TableRecord {
+        &self.table
+    }
+
+    /// Spin parameter α.
+    #[must_use]
+    pub fn alpha(&self) -> f64 {
+        self.alpha
+    }
+
+    /// How the exponent was measured (with δ0 for finite differences).
+    #[must_use]
+    pub fn method(&self) -> Method {
+        self.method
+    }
+
+    /// How initial conditions were drawn (`None`: explicit states).
+    #[must_use]
+    pub fn sampler(&self) -> Option<Sampler> {
+        self.sampler
+    }
+
+    /// Version of `spinball-analysis` that computed it.
+    #[must_use]
+    pub fn version(&self) -> &str {
+        &self.version
+    }
+
+    /// The implementation that ran the trajectories.
+    #[must_use]
+    pub fn engine(&self) -> Engine {
+        self.engine
+    }
+
+    /// Why the run stopped.
+    #[must_use]
+    pub fn stop(&self) -> StopReason {
+        self.stop
+    }
+
+    /// Per-trajectory results, in index order.
+    #[must_use]
+    pub fn trajectories(&self) -> &[TrajectoryStats] {
+        &self.trajectories
     }
 
     /// The initial separation of the finite-difference method (`None` for

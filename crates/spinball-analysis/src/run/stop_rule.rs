@@ -76,8 +76,8 @@ impl StopRule {
     ///     .with_method(Method::Tangent);
     /// let rule = StopRule::total_error(16, 0.02, 0.004);
     /// let estimate = ensemble.run_until(&rule)?;
-    /// assert_eq!(estimate.stop, StopReason::TotalErrorReached);
-    /// assert!(estimate.sem.hypot(0.004) <= 0.02 * estimate.mean);
+    /// assert_eq!(estimate.stop(), StopReason::TotalErrorReached);
+    /// assert!(estimate.sem().hypot(0.004) <= 0.02 * estimate.mean());
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     #[must_use]

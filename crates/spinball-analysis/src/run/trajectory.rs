@@ -150,16 +150,3 @@ pub(crate) fn scalar_chunked<B: Boundary + Sync>(
             .collect()
     })
 }
-
-/// Per-trajectory values as CSV: `index,exponent,per_collision,time,collisions`.
-#[must_use]
-pub fn trajectories_csv(trajectories: &[TrajectoryStats]) -> String {
-    let mut out = String::from("index,exponent,per_collision,time,collisions\n");
-    for t in trajectories {
-        out.push_str(&format!(
-            "{},{},{},{},{}\n",
-            t.index, t.exponent, t.per_collision, t.time, t.collisions
-        ));
-    }
-    out
-}

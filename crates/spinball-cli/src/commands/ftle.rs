@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use spinball_analysis::estimators::Histogram;
-use spinball_analysis::run::trajectories_csv;
+use spinball_analysis::report::trajectories_csv;
 
 use crate::commands::lyapunov::{LyapunovArgs, Outcome, run_ensembles};
 use crate::error::CliError;
@@ -18,7 +18,7 @@ pub struct FtleArgs {
     #[command(flatten)]
     pub lyapunov: LyapunovArgs,
     /// Write every initial condition's values as CSV
-    /// (`index,exponent,per_collision,time,collisions`); with several α,
+    /// (`alpha,index,exponent,per_collision,time,collisions`); with several α,
     /// one file per α, named by its value: `x.csv` becomes `x.alpha-0.5.csv`
     /// for α = 0.5.
     #[arg(long)]
@@ -104,10 +104,8 @@ pub fn ftle(args: &FtleArgs) -> Result<(), CliError> {
     l.out.write_files(&estimates)?;
     for (k, e) in estimates.iter().enumerate() {
         if let Some(path) = &args.per_ic {
-            write_text(
-                &for_alpha(path, alphas, k),
-                &trajectories_csv(&e.trajectories),
-            )?;
+            let csv = trajectories_csv(std::slice::from_ref(e)).map_err(CliError::failed)?;
+            write_text(&for_alpha(path, alphas, k), &csv)?;
         }
         if let Some(path) = &args.histogram {
             let hist = e

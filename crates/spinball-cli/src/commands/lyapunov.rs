@@ -7,12 +7,13 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use clap::Args;
+use spinball_analysis::report::PartialDocument;
 use spinball_analysis::run::{
     Ensemble, LyapunovEstimate, PartialRun, RunDifference, Shard, TrajectoryStats,
 };
 use spinball_geometry::Built;
 
-use crate::documents::{PartialDocument, write_json};
+use crate::documents::{read_partial, write_partial};
 use crate::error::CliError;
 use crate::files::{check_writable, remove_regular};
 use crate::output::OutputArgs;
@@ -105,7 +106,7 @@ pub fn run_ensembles(
         let path = checkpoint.as_ref().ok_or_else(|| {
             CliError::Usage("--resume needs --checkpoint or --json (to find the checkpoint)".into())
         })?;
-        let doc = PartialDocument::read(path)?;
+        let doc = read_partial(path)?;
         check_resume(path, &doc, &ensembles, shard, &total)?;
         doc
     } else {
@@ -153,7 +154,7 @@ pub fn run_ensembles(
                 set_point(&mut doc, i, current);
                 bar.abandon();
                 if let Some(path) = &checkpoint {
-                    write_json(path, &doc)?;
+                    write_partial(path, &doc)?;
                 }
                 return Err(why.unwrap_or_else(|| CliError::failed(e)));
             }
@@ -162,7 +163,7 @@ pub fn run_ensembles(
     bar.finish_and_clear();
     if shard.count > 1 {
         let path = out.json.as_ref().expect("checked above");
-        write_json(path, &doc)?;
+        write_partial(path, &doc)?;
         remove_checkpoint(checkpoint.as_deref(), path);
         if !out.quiet {
             print(&format!(
@@ -259,14 +260,14 @@ fn save(
 ) -> Result<(), CliError> {
     let mut snapshot = doc.clone();
     set_point(&mut snapshot, i, current.clone());
-    write_json(path, &snapshot)
+    write_partial(path, &snapshot)
 }
 
 /// The error of a stopped run, after saving what it finished.
 fn interrupted(why: CliError, doc: &PartialDocument, checkpoint: Option<PathBuf>) -> CliError {
     match why {
         CliError::Interrupted { .. } => match checkpoint {
-            Some(path) => match write_json(&path, doc) {
+            Some(path) => match write_partial(&path, doc) {
                 Ok(()) => CliError::Interrupted {
                     checkpoint: Some(path),
                 },

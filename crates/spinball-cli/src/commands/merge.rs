@@ -1,14 +1,16 @@
 //! `spinball merge`: the shards of a run, combined into the result one
-//! unsharded run gives, bitwise.
+//! unsharded run gives, bitwise. The comparison and the joining are the
+//! library's (`PartialDocument::merge`, `SpectrumDocument::merge`); this
+//! command reads the files and names them in every refusal.
 
-use std::fmt::Display;
 use std::path::{Path, PathBuf};
 
 use clap::Args;
-use spinball_analysis::run::{RunDifference, merge_partials};
+use spinball_analysis::report::{Document, PartialDocument, SpectrumDocument};
+use spinball_analysis::run::MergeError;
 
-use crate::commands::spectrum::{SPECTRUM_PARTIAL_KIND, SpectrumDocument};
-use crate::documents::{PARTIAL_KIND, PartialDocument};
+use crate::commands::spectrum::write_spectrum;
+use crate::documents::read_document;
 use crate::error::CliError;
 use crate::output::OutputArgs;
 
@@ -23,13 +25,27 @@ pub struct MergeArgs {
     pub out: OutputArgs,
 }
 
-/// The `kind` of a result file.
-fn kind(path: &Path) -> Result<String, CliError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::Usage(format!("cannot read {}: {e}", path.display())))?;
-    let v: serde_json::Value = serde_json::from_str(&text)
-        .map_err(|e| CliError::Usage(format!("{} is not JSON: {e}", path.display())))?;
-    Ok(v["kind"].as_str().unwrap_or_default().to_string())
+/// The refusal of `path` against the first file `first`: a field that
+/// differs is named with its value in each file.
+fn different(first: &Path, path: &Path, e: MergeError) -> CliError {
+    match e {
+        MergeError::DifferentRuns {
+            what,
+            first: a,
+            other: b,
+        } => CliError::Usage(format!(
+            "{} and {} are shards of different runs: {what} {a} in {}, {b} in {}; merge only the shards of one command",
+            first.display(),
+            path.display(),
+            first.display(),
+            path.display()
+        )),
+        e => CliError::Usage(format!(
+            "cannot merge {} and {}: {e}",
+            first.display(),
+            path.display()
+        )),
+    }
 }
 
 /// `spinball merge`.
@@ -39,93 +55,52 @@ fn kind(path: &Path) -> Result<String, CliError> {
 /// or whose ranges overlap or leave indices out.
 pub fn merge(args: &MergeArgs) -> Result<(), CliError> {
     args.out.check()?;
-    let first_kind = kind(&args.parts[0])?;
-    if first_kind == SPECTRUM_PARTIAL_KIND {
-        let docs = args
-            .parts
-            .iter()
-            .map(|p| {
-                let text = std::fs::read_to_string(p).map_err(CliError::usage)?;
-                serde_json::from_str::<SpectrumDocument>(&text).map_err(|e| {
+    let first_path = &args.parts[0];
+    match read_document(first_path)? {
+        Document::LyapunovPartial(first) => {
+            let mut docs = vec![first];
+            for path in &args.parts[1..] {
+                let doc = read_document(path)?.into_partial().map_err(|e| {
                     CliError::Usage(format!(
-                        "{} is not a valid spinball spectrum result: {e}",
-                        p.display()
+                        "{} is {e}, like {}",
+                        path.display(),
+                        first_path.display()
                     ))
-                })
-            })
-            .collect::<Result<Vec<_>, _>>()?;
-        for (path, d) in args.parts.iter().zip(&docs).skip(1) {
-            d.same_run(&docs[0]).map_err(|why| {
-                CliError::Usage(format!(
-                    "{} and {} are not shards of one spectrum run: {why}",
-                    args.parts[0].display(),
-                    path.display()
-                ))
-            })?;
-        }
-        return SpectrumDocument::merge(docs)?.write_results(&args.out);
-    }
-    if first_kind != PARTIAL_KIND {
-        return Err(CliError::Usage(format!(
-            "{} is not a partial result (its kind is `{first_kind}`); merge the --json files of sharded runs",
-            args.parts[0].display()
-        )));
-    }
-    let docs = args
-        .parts
-        .iter()
-        .map(|p| PartialDocument::read(p).map(|d| (p, d)))
-        .collect::<Result<Vec<_>, _>>()?;
-    let (first_path, first) = &docs[0];
-    for (path, d) in &docs[1..] {
-        let differ = |what: &str, a: &dyn Display, b: &dyn Display| {
-            CliError::Usage(format!(
-                "{} and {} are shards of different runs: {what} {a} in {}, {b} in {}; merge only the shards of one command",
-                first_path.display(),
-                path.display(),
-                first_path.display(),
-                path.display()
-            ))
-        };
-        if d.total != first.total {
-            return Err(differ(
-                "initial conditions",
-                &format_args!("{:?}", first.total),
-                &format_args!("{:?}", d.total),
-            ));
-        }
-        if d.points.len() != first.points.len() {
-            return Err(differ(
-                "number of α values",
-                &first.points.len(),
-                &d.points.len(),
-            ));
-        }
-        for (a, b) in first.points.iter().zip(&d.points) {
-            match a.provenance.difference(&b.provenance) {
-                Ok(()) => {}
-                Err(RunDifference::Field { what, first, other }) => {
-                    return Err(differ(what, &first, &other));
-                }
-                Err(e) => {
-                    return Err(CliError::Usage(format!(
-                        "cannot merge {} and {}: {e}",
-                        first_path.display(),
-                        path.display()
-                    )));
-                }
+                })?;
+                docs[0]
+                    .same_run(&doc)
+                    .map_err(|e| different(first_path, path, e))?;
+                docs.push(doc);
             }
-            if a.version != b.version {
-                return Err(differ("version", &a.version, &b.version));
-            }
+            let merged = PartialDocument::merge(&docs).map_err(CliError::usage)?;
+            args.out.write_results(&merged.points)
         }
+        Document::SpectrumPartial(first) => {
+            let mut docs = vec![first];
+            for path in &args.parts[1..] {
+                let doc = match read_document(path)? {
+                    Document::SpectrumPartial(d) => d,
+                    other => {
+                        return Err(CliError::Usage(format!(
+                            "{} is a `{}`, not a shard of a spectrum run like {}",
+                            path.display(),
+                            other.kind(),
+                            first_path.display()
+                        )));
+                    }
+                };
+                docs[0]
+                    .same_run(&doc)
+                    .map_err(|e| different(first_path, path, e))?;
+                docs.push(doc);
+            }
+            let merged = SpectrumDocument::merge(&docs).map_err(CliError::usage)?;
+            write_spectrum(&merged, &args.out)
+        }
+        other => Err(CliError::Usage(format!(
+            "{} is not a partial result (its kind is `{}`); merge the --json files of sharded runs",
+            first_path.display(),
+            other.kind()
+        ))),
     }
-    let estimates = (0..first.points.len())
-        .map(|k| {
-            let parts = docs.iter().map(|(_, d)| d.points[k].clone()).collect();
-            merge_partials(parts, Some(first.total.clone()))
-                .map_err(|e| CliError::Usage(format!("point {k}: {e}")))
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    args.out.write_results(&estimates)
 }

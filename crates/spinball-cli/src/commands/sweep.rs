@@ -33,14 +33,15 @@ use std::path::{Path, PathBuf};
 use clap::Args;
 use spinball_analysis::estimators::Method;
 use spinball_analysis::precision::ErrorBudget;
-use spinball_analysis::report::{BudgetRow, SweepDocument};
+use spinball_analysis::report::{BudgetRow, Document, SweepDocument};
 use spinball_analysis::run::{Ensemble, Threads};
 use spinball_core::{Sampler, SpinLaw, SpinLawError};
 use spinball_geometry::Table;
 
 use crate::error::CliError;
 
-use crate::files::{check_writable, write_atomic};
+use crate::documents::write_document;
+use crate::files::check_writable;
 use crate::stdout::print;
 
 /// Initial conditions each point's bias estimate is fitted on.
@@ -126,11 +127,11 @@ impl SweepArgs {
     }
 }
 
-/// Write `doc` to `path`, pretty-printed, replacing it whole (a path that
-/// exists and is not a regular file is refused).
-fn write_document(path: &Path, doc: &SweepDocument) -> Result<(), CliError> {
-    let text = serde_json::to_string_pretty(doc).map_err(CliError::failed)?;
-    write_atomic(path, (text + "\n").as_bytes())
+/// Write `doc` to `path` as a `spinball.sweep` document, pretty-printed,
+/// replacing it whole (a path that exists and is not a regular file is
+/// refused).
+fn write_sweep(path: &Path, doc: &SweepDocument) -> Result<(), CliError> {
+    write_document(path, &Document::Sweep(doc.clone()), true)
 }
 
 /// Run `spinball sweep`.
@@ -144,7 +145,7 @@ pub fn sweep(args: &SweepArgs) -> Result<(), CliError> {
     let mut doc = SweepDocument::new(&args.table, args.method, args.sampler, args.seed);
     // Fail on an unwritable path now, not after the computation.
     check_writable("json", &args.json)?;
-    write_document(&args.json, &doc).map_err(|e| CliError::Usage(format!("--json: {e}")))?;
+    write_sweep(&args.json, &doc).map_err(|e| CliError::Usage(format!("--json: {e}")))?;
     // The rows on stdout; the document is written whatever becomes of
     // them (a full or closed stdout is reported after the run).
     let mut shown: Result<(), CliError> = Ok(());
@@ -174,7 +175,12 @@ pub fn sweep(args: &SweepArgs) -> Result<(), CliError> {
             .map_err(|e| CliError::Failed(format!("alpha = {}: {e}", law.alpha())))?;
         say(format!(
             "{:>8} {:>10.5} {:>9.5} {:>10.5} {:>7.3} {:>9.2}\n",
-            est.alpha, est.mean, est.sem, est.median, est.chaotic_fraction, est.wall_time_s
+            est.alpha(),
+            est.mean(),
+            est.sem(),
+            est.median(),
+            est.chaotic_fraction(),
+            est.wall_time_s()
         ));
         // The budget needs a bias fit (at least 8 collisions); a point
         // without one is still written, with the reason on stderr.
@@ -194,7 +200,7 @@ pub fn sweep(args: &SweepArgs) -> Result<(), CliError> {
                 doc.push(&est);
             }
         }
-        write_document(&args.json, &doc)?;
+        write_sweep(&args.json, &doc)?;
     }
     say(format!(
         "\nerror budget (bias from the first {BIAS_ICS} ICs):\n"

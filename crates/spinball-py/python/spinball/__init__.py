@@ -47,9 +47,11 @@ from ._spinball import (
     lyapunov,
     plus_minus,
     periodic_orbits,
+    read_results,
     spectrum,
     table,
     table_file,
+    write_results,
 )
 
 __all__ = [
@@ -74,7 +76,9 @@ __all__ = [
     "lyapunov",
     "plus_minus",
     "periodic_orbits",
+    "read_results",
     "spectrum",
     "table",
     "table_file",
+    "write_results",
 ]

@@ -243,6 +243,14 @@ class SpectrumResult:
     def to_json(self, indent: Optional[int] = None) -> str: ...
     def to_dict(self) -> Dict[str, Any]: ...
 
+def read_results(text: str) -> List[LyapunovResult]:
+    """The results of a ``spinball.lyapunov`` document (``spinball lyapunov --json``)."""
+    ...
+
+def write_results(results: Sequence[LyapunovResult], pretty: bool = False) -> str:
+    """``results`` as a ``spinball.lyapunov`` document (the command line's format)."""
+    ...
+
 def lyapunov(
     table: TableLike,
     alpha: float,

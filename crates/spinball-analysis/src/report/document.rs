@@ -1,0 +1,222 @@
+//! One versioned JSON document for every result a front writes: finished
+//! and partial Lyapunov runs, spectra, sweeps. Each file says what it is
+//! (`kind`) and which layout it follows (`schema`), so a reader refuses a
+//! file it cannot read with a message naming both versions instead of a
+//! field error deep inside.
+//!
+//! Documented in the group docs (`report/mod.rs`), section "Documents".
+
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use super::lyapunov::LyapunovDocument;
+use super::partial::PartialDocument;
+use super::spectrum::SpectrumDocument;
+use super::sweep::SweepDocument;
+
+/// The layout version this build writes and reads. Files written by
+/// spinball 0.1 carry no `schema`: they are schema 1.
+pub const SCHEMA: u32 = 2;
+
+/// The schema of files without a `schema` field (spinball 0.1).
+pub const SCHEMA_0_1: u32 = 1;
+
+/// Every result document, told apart by its `kind`. As JSON it is one
+/// object: `schema` ([`SCHEMA`]), `kind`, then the fields of the kind.
+///
+/// ```
+/// use spinball_analysis::report::{Document, LyapunovDocument, SCHEMA};
+///
+/// let doc = Document::Lyapunov(LyapunovDocument::new(Vec::new()));
+/// let text = doc.to_json()?;
+/// assert_eq!(text, r#"{"schema":2,"kind":"spinball.lyapunov","points":[]}"#);
+/// assert_eq!(Document::from_json(&text)?, doc);
+/// # Ok::<(), spinball_analysis::report::DocumentError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind")]
+#[non_exhaustive]
+pub enum Document {
+    /// A finished Lyapunov run (`spinball lyapunov`, `ftle`, `merge`).
+    #[serde(rename = "spinball.lyapunov")]
+    Lyapunov(LyapunovDocument),
+    /// A shard or a checkpoint of a Lyapunov run.
+    #[serde(rename = "spinball.lyapunov.partial")]
+    LyapunovPartial(PartialDocument),
+    /// A finished spectrum run.
+    #[serde(rename = "spinball.spectrum")]
+    Spectrum(SpectrumDocument),
+    /// A shard of a spectrum run.
+    #[serde(rename = "spinball.spectrum.partial")]
+    SpectrumPartial(SpectrumDocument),
+    /// λ(α) on one table with each point's error budget (`spinball sweep`).
+    #[serde(rename = "spinball.sweep")]
+    Sweep(SweepDocument),
+}
+
+/// Why a document could not be read or written.
+#[derive(Debug, Error)]
+#[non_exhaustive]
+pub enum DocumentError {
+    /// Not JSON, or not the fields of its kind (an edited or damaged file
+    /// included: the checks of partial runs and spectra report here).
+    #[error("not a valid spinball result: {0}")]
+    Json(#[from] serde_json::Error),
+    /// Written with a layout this build does not read.
+    #[error(
+        "written {} with result schema {found}; this build (spinball {}) reads schema {expected}: rerun the command that made it{}",
+        written_by.as_ref().map_or_else(|| "by another spinball".to_string(), |v| format!("by spinball {v}")),
+        env!("CARGO_PKG_VERSION"),
+        if *found < *expected { " with this version" } else { ", or read it with a newer spinball" }
+    )]
+    Version {
+        /// The schema of the file (1 for a file without one).
+        found: u32,
+        /// The schema this build reads ([`SCHEMA`]).
+        expected: u32,
+        /// The crate version the file names, if it names one.
+        written_by: Option<String>,
+    },
+    /// A document of another kind than the one asked for.
+    #[error("a `{found}` document, not a `{expected}`")]
+    Kind {
+        /// The kind of the file.
+        found: String,
+        /// The kind asked for.
+        expected: &'static str,
+    },
+}
+
+/// What a reader looks at before the fields: kind, schema and the
+/// version the file names (top-level, or that of its first point).
+#[derive(Deserialize)]
+struct Header {
+    #[serde(default)]
+    kind: Option<String>,
+    #[serde(default)]
+    schema: Option<u32>,
+    #[serde(default)]
+    version: Option<String>,
+    #[serde(default)]
+    points: Vec<PointHeader>,
+}
+
+#[derive(Deserialize)]
+struct PointHeader {
+    #[serde(default)]
+    version: Option<String>,
+}
+
+/// A document as written: the schema, then the kind and its fields.
+#[derive(Serialize)]
+struct Versioned<'a> {
+    schema: u32,
+    #[serde(flatten)]
+    document: &'a Document,
+}
+
+impl Document {
+    /// The document's `kind`, e.g. `spinball.lyapunov`.
+    #[must_use]
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Document::Lyapunov(_) => "spinball.lyapunov",
+            Document::LyapunovPartial(_) => "spinball.lyapunov.partial",
+            Document::Spectrum(_) => "spinball.spectrum",
+            Document::SpectrumPartial(_) => "spinball.spectrum.partial",
+            Document::Sweep(_) => "spinball.sweep",
+        }
+    }
+
+    /// Read a document. Files of this [`SCHEMA`] are read whole; a
+    /// finished Lyapunov result of spinball 0.1 (no `schema`, same fields)
+    /// is read too; every other layout is refused.
+    ///
+    /// # Errors
+    /// [`DocumentError::Version`] for a schema this build does not read
+    /// (naming it, the spinball version that wrote it and [`SCHEMA`]);
+    /// [`DocumentError::Json`] for text that is not a document or a file
+    /// that does not hold together.
+    pub fn from_json(text: &str) -> Result<Document, DocumentError> {
+        let header: Header = serde_json::from_str(text)?;
+        let found = header.schema.unwrap_or(SCHEMA_0_1);
+        let readable = found == SCHEMA
+            || (found == SCHEMA_0_1
+                && header.schema.is_none()
+                && header.kind.as_deref() == Some("spinball.lyapunov"));
+        if !readable {
+            return Err(DocumentError::Version {
+                found,
+                expected: SCHEMA,
+                written_by: header
+                    .version
+                    .or_else(|| header.points.into_iter().find_map(|p| p.version)),
+            });
+        }
+        Ok(serde_json::from_str(text)?)
+    }
+
+    /// The document as compact JSON (one line).
+    ///
+    /// # Errors
+    /// [`DocumentError::Json`] if a value cannot be written (a partial run
+    /// or a spectrum that does not hold together).
+    pub fn to_json(&self) -> Result<String, DocumentError> {
+        Ok(serde_json::to_string(&self.versioned())?)
+    }
+
+    /// The document as indented JSON.
+    ///
+    /// # Errors
+    /// As [`Document::to_json`].
+    pub fn to_json_pretty(&self) -> Result<String, DocumentError> {
+        Ok(serde_json::to_string_pretty(&self.versioned())?)
+    }
+
+    fn versioned(&self) -> Versioned<'_> {
+        Versioned {
+            schema: SCHEMA,
+            document: self,
+        }
+    }
+
+    /// The finished Lyapunov run this document is.
+    ///
+    /// # Errors
+    /// [`DocumentError::Kind`] for any other kind.
+    pub fn into_lyapunov(self) -> Result<LyapunovDocument, DocumentError> {
+        match self {
+            Document::Lyapunov(d) => Ok(d),
+            other => Err(other.not("spinball.lyapunov")),
+        }
+    }
+
+    /// The piece of a Lyapunov run this document is.
+    ///
+    /// # Errors
+    /// [`DocumentError::Kind`] for any other kind.
+    pub fn into_partial(self) -> Result<PartialDocument, DocumentError> {
+        match self {
+            Document::LyapunovPartial(d) => Ok(d),
+            other => Err(other.not("spinball.lyapunov.partial")),
+        }
+    }
+
+    /// The sweep this document is.
+    ///
+    /// # Errors
+    /// [`DocumentError::Kind`] for any other kind.
+    pub fn into_sweep(self) -> Result<SweepDocument, DocumentError> {
+        match self {
+            Document::Sweep(d) => Ok(d),
+            other => Err(other.not("spinball.sweep")),
+        }
+    }
+
+    fn not(&self, expected: &'static str) -> DocumentError {
+        DocumentError::Kind {
+            found: self.kind().to_string(),
+            expected,
+        }
+    }
+}
