@@ -84,10 +84,13 @@ fn on_baseline<G: Geom, K: Kernel, L: Lanes<Needs: ProvenBy<Baseline>>>(
 }
 
 /// The register groups kernel `K` runs with on table `G`: its
-/// [`Kernel::Groups`] or its [`Kernel::BulkyGroups`], as `G`'s
-/// [`Footprint`] picks.
-type GroupsOn<K, G> =
-    <<G as Geom>::Footprint as Footprint>::Pick<<K as Kernel>::Groups, <K as Kernel>::BulkyGroups>;
+/// [`Kernel::Groups`], [`Kernel::BulkyGroups`] or [`Kernel::ArcGroups`], as
+/// `G`'s [`Footprint`] picks.
+type GroupsOn<K, G> = <<G as Geom>::Footprint as Footprint>::Pick<
+    <K as Kernel>::Groups,
+    <K as Kernel>::BulkyGroups,
+    <K as Kernel>::ArcGroups,
+>;
 
 /// Running any [`Kernel`] at an instruction-set level.
 pub(crate) trait Dispatch: Kernel {

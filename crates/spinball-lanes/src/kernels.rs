@@ -11,7 +11,7 @@
 //!
 //! This module knows nothing of instruction sets beyond the lane types each
 //! kernel prefers per level and per table footprint ([`Kernel::Groups`],
-//! [`Kernel::BulkyGroups`]); choosing the level and entering the code
+//! [`Kernel::BulkyGroups`], [`Kernel::ArcGroups`]); choosing the level and entering the code
 //! compiled for it is the `dispatch` module's job, one layer up.
 
 use spinball_core::{State, TangentVector, Units};
@@ -38,6 +38,8 @@ pub(crate) trait Kernel: Sync {
     /// whose cast leaves fewer registers free (docs/PERFORMANCE.md,
     /// "Register groups per table").
     type BulkyGroups: PerIsa;
+    /// The same on a table with an [`ArcCast`](crate::lanes::ArcCast).
+    type ArcGroups: PerIsa;
     /// Independent streams of `L::N` trajectories a chunk steps in turn
     /// (each stream's landing then covers the other's division: see
     /// docs/PERFORMANCE.md, "Latency, not operations").
@@ -148,6 +150,8 @@ impl Kernel for Plain {
     type Groups = Groups<3, 2, 2, 2>;
     /// As on the built-in tables.
     type BulkyGroups = <Self as Kernel>::Groups;
+    /// As on the built-in tables.
+    type ArcGroups = <Self as Kernel>::Groups;
     const STREAMS: usize = 2;
 
     #[inline(always)]
@@ -251,6 +255,8 @@ impl Kernel for FiniteDifference {
     type Groups = Groups<3, 4, 4, 4>;
     /// Two AVX2 and two SSE2 registers per group instead of four.
     type BulkyGroups = Groups<3, 2, 2, 4>;
+    /// As without arcs.
+    type ArcGroups = <Self as Kernel>::BulkyGroups;
 
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(
@@ -342,6 +348,10 @@ impl Kernel for Tangent {
     type Groups = Groups<3, 4, 4, 4>;
     /// Two AVX2 and two SSE2 registers per group instead of four.
     type BulkyGroups = Groups<3, 2, 2, 4>;
+    /// Two AVX-512 registers per group instead of three: with the arcs'
+    /// values live in its loop the third register group costs more than it
+    /// overlaps on Zen 4 (docs/PERFORMANCE.md, "Register groups per table").
+    type ArcGroups = Groups<2, 2, 2, 4>;
 
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(
@@ -415,6 +425,8 @@ impl Kernel for Spectrum {
     /// Two AVX2 registers per group instead of three, two SSE2 instead of
     /// four.
     type BulkyGroups = Groups<2, 2, 2, 2>;
+    /// As without arcs.
+    type ArcGroups = <Self as Kernel>::BulkyGroups;
 
     #[inline(always)]
     fn chunk<G: Geom, L: Lanes>(

@@ -40,7 +40,7 @@ use spinball_geometry::{ArcSegment, Segment, SegmentTable};
 use super::flat_walls::{Step, earliest, steps};
 use super::round::{Ray, Round, concave_root, contact, convex_root};
 use super::{Geom, LaneHit};
-use crate::lanes::{BulkyCast, Lanes, MaskOps, Records, cmp};
+use crate::lanes::{ArcCast, BulkyCast, Footprint, Lanes, MaskOps, Records, cmp};
 
 /// An arc's constants, as `ArcSegment::approach` and `land` use them.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -454,9 +454,31 @@ pub(crate) struct Found<L: Lanes> {
     arc_wins: L::Mask,
 }
 
-impl<const CURVED: bool> Geom for Segments<'_, CURVED> {
+/// Whether a segment table may hold arcs, as a type: `Arcs<true>` or
+/// `Arcs<false>`, which name the table's footprint.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Arcs<const CURVED: bool>;
+
+/// The register footprint of a segment table's cast.
+pub(crate) trait SegmentFootprint {
+    /// [`ArcCast`] with arcs, [`BulkyCast`] without.
+    type Of: Footprint;
+}
+
+impl SegmentFootprint for Arcs<true> {
+    type Of = ArcCast;
+}
+
+impl SegmentFootprint for Arcs<false> {
+    type Of = BulkyCast;
+}
+
+impl<const CURVED: bool> Geom for Segments<'_, CURVED>
+where
+    Arcs<CURVED>: SegmentFootprint,
+{
     const CURVED: bool = CURVED;
-    type Footprint = BulkyCast;
+    type Footprint = <Arcs<CURVED> as SegmentFootprint>::Of;
     type Found<L: Lanes> = Found<L>;
 
     #[inline(always)]

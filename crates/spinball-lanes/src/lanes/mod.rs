@@ -25,7 +25,7 @@
 //! [`portable`] (`f64` and [`Wide`]), `sse2`, `avx2`, `avx512` (x86 only) and
 //! `counted` (tests). [`PerIsa`] names the lane type a kernel runs with at
 //! each instruction-set level, and a table's [`Footprint`] which of a
-//! kernel's two sets of counts it runs with.
+//! kernel's three sets of counts it runs with.
 //!
 //! **Safety.** The SSE2, AVX2 and AVX-512 types call intrinsics, which is
 //! undefined behaviour on a CPU without the feature. Each type names the
@@ -520,15 +520,16 @@ impl<const AVX512: usize, const AVX2: usize, const SSE2: usize, const PORTABLE: 
 
 /// How many registers a table's cast keeps live, as far as the choice of
 /// register groups goes: a kernel names its groups for a [`LeanCast`]
-/// (the built-in tables' closed-form casts) and for a [`BulkyCast`] (a
+/// (the built-in tables' closed-form casts), for a [`BulkyCast`] (a
 /// table built from segments, whose cast carries the nearest candidate so
-/// far through a loop over its walls), and the table picks one
+/// far through a loop over its walls) and for an [`ArcCast`] (such a table
+/// with arcs), and the table picks one
 /// ([`Geom::Footprint`](crate::geom::Geom::Footprint)).
 ///
 /// Like the group counts themselves, the choice never changes a result.
 pub(crate) trait Footprint {
-    /// `Lean` or `Bulky`, whichever this footprint is.
-    type Pick<Lean: PerIsa, Bulky: PerIsa>: PerIsa;
+    /// `Lean`, `Bulky` or `Arcs`, whichever this footprint is.
+    type Pick<Lean: PerIsa, Bulky: PerIsa, Arcs: PerIsa>: PerIsa;
 }
 
 /// The footprint of a closed-form cast (circle, rectangle, stadium, Sinai).
@@ -541,12 +542,22 @@ pub(crate) enum LeanCast {}
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum BulkyCast {}
 
+/// The footprint of a cast that loops over flat walls and arcs (tables
+/// built from segments with arcs): each arc's square root adds live values
+/// to the loop's.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum ArcCast {}
+
 impl Footprint for LeanCast {
-    type Pick<Lean: PerIsa, Bulky: PerIsa> = Lean;
+    type Pick<Lean: PerIsa, Bulky: PerIsa, Arcs: PerIsa> = Lean;
 }
 
 impl Footprint for BulkyCast {
-    type Pick<Lean: PerIsa, Bulky: PerIsa> = Bulky;
+    type Pick<Lean: PerIsa, Bulky: PerIsa, Arcs: PerIsa> = Bulky;
+}
+
+impl Footprint for ArcCast {
+    type Pick<Lean: PerIsa, Bulky: PerIsa, Arcs: PerIsa> = Arcs;
 }
 
 #[cfg(test)]
