@@ -466,7 +466,7 @@ fn mean_sem(acc: &Accumulator) -> Measurement {
 
 /// The 99.9% point of a `χ²` law with `dof` degrees of freedom
 /// (Wilson–Hilferty approximation; good to a few percent from `dof = 1`).
-fn chi2_quantile_999(dof: usize) -> f64 {
+pub(crate) fn chi2_quantile_999(dof: usize) -> f64 {
     let k = dof.max(1) as f64;
     let z = 3.090_232; // the standard normal's 99.9% point
     let h = 2.0 / (9.0 * k);
