@@ -26,6 +26,7 @@ pub mod args;
 pub mod billiard;
 pub mod errors;
 pub mod ftle;
+pub mod multilevel;
 pub mod results;
 pub mod runs;
 pub mod tables;
@@ -59,6 +60,7 @@ fn _spinball(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<ftle::PyFtleDistribution>()?;
     m.add_class::<results::PyLyapunovResult>()?;
     m.add_class::<results::PySpectrumResult>()?;
+    m.add_class::<multilevel::PyMultilevelResult>()?;
     m.add_function(wrap_pyfunction!(runs::lyapunov, m)?)?;
     m.add_function(wrap_pyfunction!(runs::alpha_sweep, m)?)?;
     m.add_function(wrap_pyfunction!(runs::spectrum, m)?)?;

@@ -92,6 +92,25 @@ impl<B: Boundary + Clone + Sync> EnsembleLevels<B> {
         Self::new(ensemble, levels)
     }
 
+    /// [`default_levels`] up to `top` collisions.
+    ///
+    /// # Errors
+    /// [`AnalysisError::InvalidOption`] if `top` is too short for four
+    /// levels of at least [`SHORTEST_LEVEL`] collisions; then as
+    /// [`new`](Self::new).
+    pub fn up_to(ensemble: Ensemble<B>, top: u64) -> Result<Self, AnalysisError> {
+        let levels = default_levels(top).ok_or_else(|| {
+            AnalysisError::invalid(
+                "levels",
+                format!(
+                    "a multilevel run needs four levels of at least {SHORTEST_LEVEL} collisions: the top run length must be at least {}, got {top}",
+                    8 * SHORTEST_LEVEL
+                ),
+            )
+        })?;
+        Self::new(ensemble, levels)
+    }
+
     /// The ensemble the levels run.
     #[must_use]
     pub fn ensemble(&self) -> &Ensemble<B> {
@@ -118,26 +137,47 @@ impl<B: Boundary + Clone + Sync> EnsembleLevels<B> {
     }
 }
 
-/// Shortest level [`halving_levels`] makes (collisions): shorter runs are
+/// Shortest level [`levels_below`] makes (collisions): shorter runs are
 /// mostly the transient, which neither classifies nor saves work.
 pub const SHORTEST_LEVEL: u64 = 200;
 
-/// `T/2^k, …, T/2, T` down to at least [`SHORTEST_LEVEL`] collisions (at
-/// most 12 levels); `None` if `top` is too short for four levels.
+/// Levels `T/r^k, …, T/r, T` (integer division) down to at least
+/// [`SHORTEST_LEVEL`] collisions, at most 12; `None` for `ratio < 2` or if
+/// `top` is too short for four levels.
 ///
 /// ```
-/// use spinball_analysis::precision::halving_levels;
-/// assert_eq!(halving_levels(1600), Some(vec![200, 400, 800, 1600]));
-/// assert_eq!(halving_levels(1000), None);
-/// assert_eq!(halving_levels(25_000).unwrap()[0], 390);
+/// use spinball_analysis::precision::levels_below;
+/// assert_eq!(levels_below(1600, 2), Some(vec![200, 400, 800, 1600]));
+/// assert_eq!(levels_below(1000, 2), None);
+/// assert_eq!(levels_below(25_000, 4), Some(vec![390, 1562, 6250, 25_000]));
 /// ```
 #[must_use]
-pub fn halving_levels(top: u64) -> Option<Vec<u64>> {
+pub fn levels_below(top: u64, ratio: u64) -> Option<Vec<u64>> {
+    if ratio < 2 {
+        return None;
+    }
     let mut levels = vec![top];
-    while levels[0] / 2 >= SHORTEST_LEVEL && levels.len() < 12 {
-        levels.insert(0, levels[0] / 2);
+    while levels[0] / ratio >= SHORTEST_LEVEL && levels.len() < 12 {
+        levels.insert(0, levels[0] / ratio);
     }
     (levels.len() >= 4).then_some(levels)
+}
+
+/// The levels a multilevel run up to `top` collisions uses by default:
+/// ratio 4 where that leaves four levels of at least [`SHORTEST_LEVEL`]
+/// (`top ≥ 12 800`), else ratio 2 (`top ≥ 1600`). The corrections'
+/// variance falls about like `1/T` while their cost grows like `T`, so
+/// fewer, wider levels cost less than many halvings.
+///
+/// ```
+/// use spinball_analysis::precision::default_levels;
+/// assert_eq!(default_levels(2_000), Some(vec![250, 500, 1_000, 2_000]));
+/// assert_eq!(default_levels(25_000), Some(vec![390, 1_562, 6_250, 25_000]));
+/// assert_eq!(default_levels(1_000), None);
+/// ```
+#[must_use]
+pub fn default_levels(top: u64) -> Option<Vec<u64>> {
+    levels_below(top, 4).or_else(|| levels_below(top, 2))
 }
 
 /// The seed of level `level` of a multilevel run with seed `seed`: a

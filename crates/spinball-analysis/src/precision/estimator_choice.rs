@@ -8,7 +8,7 @@ use std::fmt;
 
 use spinball_geometry::Boundary;
 
-use super::ensemble_levels::{EnsembleLevels, SHORTEST_LEVEL, halving_levels};
+use super::ensemble_levels::{EnsembleLevels, SHORTEST_LEVEL, default_levels};
 use super::multilevel::{LevelSamples, Multilevel, giles_allocation};
 use super::planner::{PlannedRun, Planner};
 use crate::error::AnalysisError;
@@ -114,8 +114,8 @@ impl Planner {
     /// The cheaper of a plain and a multilevel run of `scene` for relative
     /// total error `target_rel`, and why. The plain plan is
     /// [`plan`](Self::plan)'s; the multilevel plan tops out at the same
-    /// run length (so it has the same bias), halves it level by level down
-    /// to at least [`SHORTEST_LEVEL`] collisions (four levels at least),
+    /// run length (so it has the same bias), with [`default_levels`] below
+    /// it,
     /// runs a pilot of `pilot_ics` initial conditions per level and
     /// predicts its work from Giles' allocation for the statistical error
     /// the plain plan's bias leaves. Multilevel wins if predicted at most
@@ -131,7 +131,7 @@ impl Planner {
         pilot_ics: u64,
     ) -> Result<EstimatorPlan, AnalysisError> {
         let plain = self.plan(target_rel)?;
-        let Some(levels) = halving_levels(plain.collisions) else {
+        let Some(levels) = default_levels(plain.collisions) else {
             let reason = format!(
                 "the plain run of {} collisions is too short for four levels of at least {SHORTEST_LEVEL} ({})",
                 plain.collisions,

@@ -4,7 +4,9 @@
 //! Documented in the group docs (`precision/mod.rs`), section "Multilevel
 //! ensembles".
 
-use super::finite_time_bias::{BiasFit, BiasLaw, BiasRegime, MIN_CHECKPOINTS};
+use super::finite_time_bias::{
+    BiasFit, BiasLaw, BiasRegime, MIN_CHECKPOINTS, preferred_fit, select_regime, solve_augmented,
+};
 use super::measurement::Measurement;
 use crate::error::AnalysisError;
 
@@ -63,17 +65,12 @@ impl LevelExtrapolation {
         let chol = cholesky(cov)?;
         let inverse_t = gls(BiasLaw::InverseT, collisions, means, &chol)?;
         let log_t = gls(BiasLaw::LogTOverT, collisions, means, &chol)?;
-        let log_resolved = log_t.coefficient.value > 3.0 * log_t.coefficient.sem;
-        let regime = match (inverse_t.consistent(), log_t.consistent()) {
-            (true, _) => BiasRegime::InverseT,
-            (false, true) if log_resolved => BiasRegime::LogTOverT,
-            (false, _) => BiasRegime::Neither,
-        };
-        let systematic = if regime == BiasRegime::Neither {
-            (inverse_t.limit.value - log_t.limit.value).abs()
-        } else {
-            0.0
-        };
+        let (regime, systematic) = select_regime(
+            &inverse_t,
+            &log_t,
+            inverse_t.consistent(),
+            log_t.consistent(),
+        );
         Ok(LevelExtrapolation {
             inverse_t,
             log_t,
@@ -86,18 +83,7 @@ impl LevelExtrapolation {
     /// smaller `χ²/dof`).
     #[must_use]
     pub fn preferred(&self) -> &BiasFit {
-        match self.regime {
-            BiasRegime::InverseT => &self.inverse_t,
-            BiasRegime::LogTOverT => &self.log_t,
-            BiasRegime::Neither => {
-                let per_dof = |f: &BiasFit| f.chi2 / f.dof.max(1) as f64;
-                if per_dof(&self.log_t) < per_dof(&self.inverse_t) {
-                    &self.log_t
-                } else {
-                    &self.inverse_t
-                }
-            }
-        }
+        preferred_fit(self.regime, &self.inverse_t, &self.log_t)
     }
 
     /// `λ_∞`, its standard error combined with the systematic one.
@@ -149,11 +135,10 @@ fn whiten(l: &[Vec<f64>], v: &[f64]) -> Vec<f64> {
     out
 }
 
-/// Inverse of a small symmetric positive-definite matrix (Gauss–Jordan
-/// with partial pivoting).
+/// Inverse of a small symmetric positive-definite matrix.
 fn invert(a: &[Vec<f64>]) -> Result<Vec<Vec<f64>>, AnalysisError> {
     let p = a.len();
-    let mut m: Vec<Vec<f64>> = a
+    let augmented = a
         .iter()
         .enumerate()
         .map(|(i, row)| {
@@ -162,33 +147,7 @@ fn invert(a: &[Vec<f64>]) -> Result<Vec<Vec<f64>>, AnalysisError> {
             r
         })
         .collect();
-    for col in 0..p {
-        let pivot = (col..p)
-            .max_by(|&i, &j| m[i][col].abs().total_cmp(&m[j][col].abs()))
-            .expect("non-empty");
-        m.swap(col, pivot);
-        let d = m[col][col];
-        let scale = m[col][..p].iter().fold(0.0f64, |s, v| s.max(v.abs()));
-        if !(d.abs() > 1e-12 * scale && d.is_finite()) {
-            return Err(AnalysisError::invalid(
-                "levels",
-                "too close together to separate the bias from the limit",
-            ));
-        }
-        for v in &mut m[col] {
-            *v /= d;
-        }
-        let pivot_row = m[col].clone();
-        for (r, row) in m.iter_mut().enumerate() {
-            if r != col {
-                let f = row[col];
-                for (v, pv) in row.iter_mut().zip(&pivot_row) {
-                    *v -= f * pv;
-                }
-            }
-        }
-    }
-    Ok(m.into_iter().map(|r| r[p..].to_vec()).collect())
+    solve_augmented(augmented, p)
 }
 
 /// The basis of a law at `t` collisions scaled by its value at `t0` (so the

@@ -202,7 +202,9 @@ mod work_precision;
 pub use convergence::{
     LcnTrace, convergence_estimates, format_mean_sem, lcn_trace, lcn_traces, trajectory_checkpoints,
 };
-pub use ensemble_levels::{EnsembleLevels, SHORTEST_LEVEL, halving_levels, level_seed};
+pub use ensemble_levels::{
+    EnsembleLevels, SHORTEST_LEVEL, default_levels, level_seed, levels_below,
+};
 pub use error_budget::{ErrorBudget, Reference};
 pub use estimator_choice::{EstimatorKind, EstimatorPlan, MULTILEVEL_MARGIN, MultilevelPlan};
 pub use finite_time_bias::{BiasFit, BiasLaw, BiasRegime, FiniteTimeBias, MIN_CHECKPOINTS};

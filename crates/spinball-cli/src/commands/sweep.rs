@@ -39,6 +39,7 @@ use spinball_core::{Sampler, SpinLaw, SpinLawError};
 use spinball_geometry::Table;
 
 use crate::error::CliError;
+use crate::estimator_args::{EstimatorArgs, run_multilevel, write_multilevel};
 
 use crate::files::{check_replaceable, write_atomic};
 use crate::stdout::print;
@@ -87,6 +88,8 @@ pub struct SweepArgs {
     /// Allow α > 1 (the mathematical extension towards no-slip).
     #[arg(long)]
     pub extended: bool,
+    #[command(flatten)]
+    pub estimator: EstimatorArgs,
 }
 
 impl SweepArgs {
@@ -141,6 +144,17 @@ fn write_document(path: &Path, doc: &SweepDocument) -> Result<(), CliError> {
 /// run or a write that fails later.
 pub fn sweep(args: &SweepArgs) -> Result<(), CliError> {
     let laws = args.laws()?;
+    if let Some(options) = args.estimator.multilevel()? {
+        check_replaceable("--json", &args.json)?;
+        let mut points = Vec::new();
+        for law in laws {
+            let point = run_multilevel(&args.ensemble(law), &options)?;
+            print(&format!("alpha = {}\n{}\n", point.alpha, point.estimate))?;
+            points.push(point);
+            write_multilevel(&args.json, &points)?;
+        }
+        return print(&format!("wrote {}\n", args.json.display()));
+    }
     let mut doc = SweepDocument::new(&args.table, args.method, args.sampler, args.seed);
     // Fail on an unwritable path now, not after the computation.
     check_replaceable("--json", &args.json)?;
