@@ -20,8 +20,9 @@
 
 use std::time::Instant;
 
+use spinball::analysis::AnalysisError;
 use spinball::analysis::estimators::Method;
-use spinball::analysis::precision::Planner;
+use spinball::analysis::precision::{EnsembleLevels, Planner};
 use spinball::analysis::run::{Ensemble, Threads};
 use spinball::prelude::*;
 
@@ -152,7 +153,23 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             });
             if let Some(ml) = &choice.multilevel {
                 let t = Instant::now();
-                let e = ml.estimator().run(&ml.source(seeded)?)?;
+                // Where the levels' own bias fit finds the bias at the plain
+                // run's length above the target (the pilot saw only short
+                // runs), run the levels four times longer.
+                let e = match ml.estimator().run(&ml.source(seeded.clone())?) {
+                    Err(AnalysisError::TargetUnreachable { floor, .. }) => {
+                        let top = 4 * plain_plan.collisions;
+                        println!(
+                            "    multilevel: bias {floor:.2e} at T = {} above target; levels up to {top}",
+                            plain_plan.collisions
+                        );
+                        ml.estimator().run(&EnsembleLevels::up_to(
+                            seeded.with_method(Method::Tangent),
+                            top,
+                        )?)?
+                    }
+                    other => other?,
+                };
                 let wall = t.elapsed().as_secs_f64();
                 let l = e.lambda();
                 multi.push(Outcome {

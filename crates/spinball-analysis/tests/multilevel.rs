@@ -309,7 +309,7 @@ fn planner_chooses_by_predicted_cost() {
         (scene, planner)
     };
     let (scene, planner) = pilot(0.5);
-    let choice = planner.plan_estimator(&scene, 0.01, 64).unwrap();
+    let choice = planner.plan_estimator(&scene, 0.005, 64).unwrap();
     println!("α = 0.5: {choice}");
     let plan = choice.multilevel.clone().unwrap();
     let ratio = plan.predicted_ic_steps / choice.plain.predicted_ic_steps as f64;
@@ -325,7 +325,7 @@ fn planner_chooses_by_predicted_cost() {
         .run(&plan.source(scene.with_seed(42)).unwrap())
         .unwrap();
     println!("{e}");
-    assert!(e.rel_total() < 0.02, "{e}");
+    assert!(e.rel_total() < 0.01, "{e}");
 
     let (scene, planner) = pilot(0.0);
     let choice = planner.plan_estimator(&scene, 0.005, 64).unwrap();

@@ -372,7 +372,7 @@ impl Multilevel {
             }
             let sq = |m: Measurement| m.value * m.value + m.sem * m.sem;
             let eps_s2 =
-                (eps * eps - sq(b.finite_time_bias) - sq(b.method_bias)).max(0.1 * eps * eps);
+                (eps * eps - sq(b.finite_time_bias) - sq(b.method_bias)).max(0.25 * eps * eps);
             let stats: Vec<LevelStats> = samples.iter().map(LevelSamples::stats).collect();
             let variances: Vec<f64> = stats.iter().map(|s| s.variance).collect();
             let costs: Vec<f64> = stats.iter().map(|s| s.cost).collect();
