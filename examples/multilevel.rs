@@ -104,7 +104,6 @@ struct Outcome {
     wall: f64,
     error: f64,
     value: f64,
-    sem: f64,
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -149,7 +148,6 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 wall,
                 error,
                 value: est.mean,
-                sem: est.sem,
             });
             if let Some(ml) = &choice.multilevel {
                 let t = Instant::now();
@@ -176,7 +174,6 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     wall,
                     error: e.budget.total.value,
                     value: l.value,
-                    sem: l.sem,
                 });
                 if r == 0 {
                     print!(

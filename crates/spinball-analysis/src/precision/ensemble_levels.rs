@@ -78,16 +78,16 @@ impl<B: Boundary + Clone + Sync> EnsembleLevels<B> {
             ));
         }
         let mut levels = Vec::with_capacity(count);
-        let mut t = shortest;
+        let mut next = Some(shortest);
         for _ in 0..count {
+            let Some(t) = next else {
+                return Err(AnalysisError::invalid(
+                    "levels",
+                    "the top level's run length overflows",
+                ));
+            };
             levels.push(t);
-            t = t.checked_mul(ratio).unwrap_or(u64::MAX);
-        }
-        if levels.contains(&u64::MAX) {
-            return Err(AnalysisError::invalid(
-                "levels",
-                "the top level's run length overflows",
-            ));
+            next = t.checked_mul(ratio);
         }
         Self::new(ensemble, levels)
     }
