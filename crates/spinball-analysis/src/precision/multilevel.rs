@@ -246,7 +246,8 @@ pub struct Multilevel {
     /// Initial conditions of each level's pilot, and the fewest any level
     /// keeps. Default 64.
     pub pilot_ics: u64,
-    /// Most initial conditions of any level. Default 10⁸.
+    /// Most initial conditions of any level; a target that needs more is
+    /// refused. Default 10⁷.
     pub max_ics: u64,
     /// Most rounds of top-ups. Default 8.
     pub max_rounds: u32,
@@ -261,7 +262,7 @@ impl Multilevel {
         Multilevel {
             target_rel,
             pilot_ics: 64,
-            max_ics: 100_000_000,
+            max_ics: 10_000_000,
             max_rounds: 8,
             threshold: CHAOS_THRESHOLD,
         }
@@ -377,6 +378,19 @@ impl Multilevel {
             let variances: Vec<f64> = stats.iter().map(|s| s.variance).collect();
             let costs: Vec<f64> = stats.iter().map(|s| s.cost).collect();
             let want = giles_allocation(&variances, &costs, eps_s2);
+            if let Some((l, w)) = want
+                .iter()
+                .enumerate()
+                .find(|(_, w)| **w > self.max_ics as f64)
+            {
+                return Err(AnalysisError::invalid(
+                    "target",
+                    format!(
+                        "level {l} would need {w:.3e} initial conditions, more than max_ics = {}: aim at a larger target or raise max_ics",
+                        self.max_ics
+                    ),
+                ));
+            }
             let mut topped = false;
             for (s, w) in samples.iter_mut().zip(want) {
                 let target = (w.ceil() as u64).clamp(self.pilot_ics, self.max_ics);
