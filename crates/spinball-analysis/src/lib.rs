@@ -34,8 +34,9 @@
 //!   [`MethodBias`](precision::MethodBias), total), a
 //!   [`Reference`](precision::Reference) value,
 //!   [`work_precision()`](precision::work_precision()) sets, a
-//!   [`Planner`](precision::Planner) for a target total error and
-//!   [`StopRule::total_error`](run::StopRule::total_error).
+//!   [`Planner`](precision::Planner) for a target total error,
+//!   [`StopRule::total_error`](run::StopRule::total_error), and
+//!   [`Multilevel`](precision::Multilevel) ensembles over run length.
 //! - [`phase_space`]: the Birkhoff section, FTLE maps, the invariant measure
 //!   and return times, the regular islands and who sits on them.
 //! - [`orbits`]: periodic orbits of any period (Newton's method with the

@@ -12,24 +12,7 @@ use spinball_analysis::precision::{
 use spinball_analysis::run::{Engine, Ensemble, StopReason, StopRule, Threads};
 use spinball_core::SpinLaw;
 use spinball_geometry::{Circle, Rectangle, Stadium, Table};
-
-/// SplitMix64 and Box–Muller: standard normals from a fixed seed.
-struct Normal(u64);
-
-impl Normal {
-    fn uniform(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        ((z >> 11) as f64 + 0.5) / (1u64 << 53) as f64
-    }
-    fn next(&mut self) -> f64 {
-        let (u, v) = (self.uniform(), self.uniform());
-        (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
-    }
-}
+use spinball_test_support::Normal;
 
 const CHECKPOINTS: [u64; 5] = [1_000, 2_000, 4_000, 8_000, 16_000];
 

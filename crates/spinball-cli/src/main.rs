@@ -17,6 +17,7 @@
 mod commands;
 mod documents;
 mod error;
+mod estimator_args;
 mod files;
 mod output;
 mod run_args;

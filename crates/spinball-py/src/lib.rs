@@ -27,6 +27,7 @@ pub mod billiard;
 pub mod errors;
 pub mod ftle;
 pub mod orbits;
+pub mod multilevel;
 pub mod results;
 pub mod runs;
 pub mod tables;
@@ -63,6 +64,7 @@ fn _spinball(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(results::plus_minus, m)?)?;
     m.add_function(wrap_pyfunction!(results::read_results, m)?)?;
     m.add_function(wrap_pyfunction!(results::write_results, m)?)?;
+    m.add_class::<multilevel::PyMultilevelResult>()?;
     m.add_function(wrap_pyfunction!(runs::lyapunov, m)?)?;
     m.add_function(wrap_pyfunction!(runs::alpha_sweep, m)?)?;
     m.add_function(wrap_pyfunction!(runs::spectrum, m)?)?;

@@ -156,7 +156,7 @@ impl Plan {
     table, alpha, *, ics = None, collisions = 10_000, method = "fd", delta0 = None, seed = 0,
     sampler = None, threads = None, initial_states = None, first_index = 0,
     threshold = 0.01, engine = "lanes", extended = false, target_rel_sem = None,
-    batch = 96, time_budget = None, progress = None
+    batch = 96, time_budget = None, progress = None, estimator = "plain", target_error = None
 ))]
 #[allow(clippy::too_many_arguments)]
 pub fn lyapunov(
@@ -179,9 +179,36 @@ pub fn lyapunov(
     batch: i64,
     time_budget: Option<f64>,
     progress: Option<&Bound<'_, PyAny>>,
-) -> PyResult<PyLyapunovResult> {
+    estimator: &str,
+    target_error: Option<f64>,
+) -> PyResult<Py<PyAny>> {
     let table = table_arg(table)?;
     let law = args::law(alpha, extended)?;
+    let multilevel = match estimator {
+        "plain" if target_error.is_none() => None,
+        "plain" => {
+            return Err(value_error(
+                "target_error applies to estimator=\"multilevel\"",
+            ));
+        }
+        "multilevel" => {
+            if initial_states.is_some()
+                || target_rel_sem.is_some()
+                || time_budget.is_some()
+                || progress.is_some()
+            {
+                return Err(value_error(
+                    "estimator=\"multilevel\" draws its own initial conditions per level and stops at target_error: it takes no initial_states, target_rel_sem, time_budget or progress",
+                ));
+            }
+            Some(crate::multilevel::estimator(target_error)?)
+        }
+        other => {
+            return Err(value_error(format!(
+                "estimator must be \"plain\" or \"multilevel\", got {other:?}"
+            )));
+        }
+    };
     let plan = Plan::parse(
         ics,
         collisions,
@@ -195,6 +222,14 @@ pub fn lyapunov(
         threshold,
         engine,
     )?;
+    if let Some(options) = multilevel {
+        let result = with_table!(table, |t| crate::multilevel::run(
+            py,
+            plan.ensemble(t, law),
+            options
+        ))?;
+        return Ok(Py::new(py, result)?.into_any());
+    }
     let stop = args::stop_rule(target_rel_sem, batch, time_budget)?;
     let mut watch = Watch::new(progress)?;
     let out = py.detach(|| {
@@ -207,7 +242,8 @@ pub fn lyapunov(
             analysis,
         )
     });
-    watch.finish(out).map(|inner| PyLyapunovResult { inner })
+    let result = watch.finish(out).map(|inner| PyLyapunovResult { inner })?;
+    Ok(Py::new(py, result)?.into_any())
 }
 
 /// λ(α): `lyapunov` at each α of `alphas` (same table, initial conditions,

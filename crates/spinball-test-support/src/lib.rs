@@ -10,10 +10,14 @@
 //!   scalar path with (`spinball-lanes/tests/agreement.rs` and
 //!   `spinball-analysis/tests/lane_agreement.rs`), and the scalar reference
 //!   runs.
+//! - [`normal`]: standard normal numbers from a fixed seed, for synthetic
+//!   data with known answers.
 //! - [`tables`]: independent descriptions of tables (signed distance) and
 //!   tables built from segments that several crates test on.
 
 pub mod lanes;
+pub mod normal;
 pub mod tables;
 
+pub use normal::Normal;
 pub use tables::{mushroom, segment_sinai, signed_distance};

@@ -164,7 +164,7 @@ pub fn trajectory_checkpoints<B: Boundary>(
 }
 
 /// [`trajectory_checkpoints`] for initial condition `index` of `starts`.
-fn start_checkpoints<B: Boundary>(
+pub(crate) fn start_checkpoints<B: Boundary>(
     billiard: &Billiard<B>,
     starts: &Starts,
     seed: u64,

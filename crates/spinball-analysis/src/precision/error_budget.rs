@@ -57,7 +57,7 @@ impl ErrorBudget {
     /// The budget of `value` (over `n_ics` initial conditions, `collisions`
     /// each) with biases `ft` and `mb` measured on (possibly fewer of) its
     /// initial conditions.
-    fn assemble(
+    pub(crate) fn assemble(
         value: Measurement,
         n_ics: u64,
         collisions: u64,

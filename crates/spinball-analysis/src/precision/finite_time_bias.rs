@@ -205,17 +205,12 @@ impl FiniteTimeBias {
         // and fits 1/T data as well) and the ln T / T term is resolved and
         // positive: regular orbits approach their limit from above.
         let n = per_ic.len();
-        let log_resolved = log_t.coefficient.value > 3.0 * log_t.coefficient.sem;
-        let regime = match (inverse_t.consistent_for(n), log_t.consistent_for(n)) {
-            (true, _) => BiasRegime::InverseT,
-            (false, true) if log_resolved => BiasRegime::LogTOverT,
-            (false, _) => BiasRegime::Neither,
-        };
-        let systematic = if regime == BiasRegime::Neither {
-            (inverse_t.limit.value - log_t.limit.value).abs()
-        } else {
-            0.0
-        };
+        let (regime, systematic) = select_regime(
+            &inverse_t,
+            &log_t,
+            inverse_t.consistent_for(n),
+            log_t.consistent_for(n),
+        );
         Ok(FiniteTimeBias {
             checkpoints: checkpoints.to_vec(),
             means,
@@ -264,18 +259,7 @@ impl FiniteTimeBias {
     /// data follow; where neither fits, the one with the smaller `χ²/dof`.
     #[must_use]
     pub fn preferred(&self) -> &BiasFit {
-        match self.regime {
-            BiasRegime::InverseT => &self.inverse_t,
-            BiasRegime::LogTOverT => &self.log_t,
-            BiasRegime::Neither => {
-                let per_dof = |f: &BiasFit| f.chi2 / f.dof.max(1) as f64;
-                if per_dof(&self.log_t) < per_dof(&self.inverse_t) {
-                    &self.log_t
-                } else {
-                    &self.inverse_t
-                }
-            }
-        }
+        preferred_fit(self.regime, &self.inverse_t, &self.log_t)
     }
 
     /// The extrapolated exponent `λ_∞` of the preferred fit, its standard
@@ -299,6 +283,52 @@ impl FiniteTimeBias {
     pub fn bias(&self) -> Measurement {
         let b = self.preferred().bias;
         Measurement::new(b.value, b.sem.hypot(self.systematic))
+    }
+}
+
+/// The regime two fits are consistent with (`ln T / T` only where `1/T`
+/// fails and the `ln T / T` term is resolved and positive: the log law has
+/// a parameter more and fits `1/T` data as well, and regular orbits
+/// approach their limit from above), and the systematic error where
+/// neither fits: the distance between their limits.
+pub(crate) fn select_regime(
+    inverse_t: &BiasFit,
+    log_t: &BiasFit,
+    inverse_t_fits: bool,
+    log_t_fits: bool,
+) -> (BiasRegime, f64) {
+    let log_resolved = log_t.coefficient.value > 3.0 * log_t.coefficient.sem;
+    let regime = match (inverse_t_fits, log_t_fits) {
+        (true, _) => BiasRegime::InverseT,
+        (false, true) if log_resolved => BiasRegime::LogTOverT,
+        (false, _) => BiasRegime::Neither,
+    };
+    let systematic = if regime == BiasRegime::Neither {
+        (inverse_t.limit.value - log_t.limit.value).abs()
+    } else {
+        0.0
+    };
+    (regime, systematic)
+}
+
+/// The fit of `regime`; where neither law fits, the one with the smaller
+/// `χ²/dof`.
+pub(crate) fn preferred_fit<'a>(
+    regime: BiasRegime,
+    inverse_t: &'a BiasFit,
+    log_t: &'a BiasFit,
+) -> &'a BiasFit {
+    match regime {
+        BiasRegime::InverseT => inverse_t,
+        BiasRegime::LogTOverT => log_t,
+        BiasRegime::Neither => {
+            let per_dof = |f: &BiasFit| f.chi2 / f.dof.max(1) as f64;
+            if per_dof(log_t) < per_dof(inverse_t) {
+                log_t
+            } else {
+                inverse_t
+            }
+        }
     }
 }
 
@@ -370,7 +400,15 @@ fn estimator(x: &[Vec<f64>], w: &[f64]) -> Result<Vec<Vec<f64>>, AnalysisError> 
             row[p + m] = w[m] * x[m][r];
         }
     }
-    // Gauss–Jordan with partial pivoting.
+    solve_augmented(a, p)
+}
+
+/// Gauss–Jordan with partial pivoting on the augmented rows `[A | B]` (`A`
+/// is `p × p`): returns `A⁻¹B`.
+pub(crate) fn solve_augmented(
+    mut a: Vec<Vec<f64>>,
+    p: usize,
+) -> Result<Vec<Vec<f64>>, AnalysisError> {
     for col in 0..p {
         let pivot = (col..p)
             .max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))
@@ -466,7 +504,7 @@ fn mean_sem(acc: &Accumulator) -> Measurement {
 
 /// The 99.9% point of a `χ²` law with `dof` degrees of freedom
 /// (Wilson–Hilferty approximation; good to a few percent from `dof = 1`).
-fn chi2_quantile_999(dof: usize) -> f64 {
+pub(crate) fn chi2_quantile_999(dof: usize) -> f64 {
     let k = dof.max(1) as f64;
     let z = 3.090_232; // the standard normal's 99.9% point
     let h = 2.0 / (9.0 * k);

@@ -135,6 +135,44 @@
 //! comes with a stop rule on total error ([`PlannedRun::stop_rule`]) that
 //! stops it once the measured SEM, with the planned bias, meets the target.
 //!
+//! # Multilevel ensembles
+//!
+//! With spin the per-trajectory exponents are bimodal (chaotic sea against
+//! regular islands) and that spread does not shrink with `T`, so a plain
+//! ensemble buys every digit with 100× more full-length trajectories. But
+//! which mode a trajectory belongs to is settled after a short run; only
+//! the small correction between a short and a long run needs long runs.
+//! [`Multilevel`] estimates (Giles' multilevel Monte Carlo)
+//! `E[λ_TL] = E[λ_T0] + Σ_l E[λ_Tl − λ_Tl−1]` over geometric run lengths
+//! `T_0 < … < T_L`, each correction taken on one trajectory read at two
+//! run lengths ([`LevelDraw`]), each level with its own initial conditions
+//! ([`LevelSamples`]; level `l`'s stream is `ic_rng(level_seed(seed, l),
+//! i)`, so levels are independent and shards of a level merge exactly).
+//!
+//! A pilot of every level measures the variance `V_l` of its correction
+//! and its cost `C_l` (IC-steps, a count, so the allocation and hence the
+//! result do not depend on the clock); [`giles_allocation`] gives the
+//! initial conditions per level, `N_l ∝ √(V_l/C_l)`, that reach the
+//! statistical error left once the biases are counted, and the run tops up
+//! until no level needs more. The level means give `λ_T` at every `T_l`
+//! at once, with correlated errors (the means share their coarser levels);
+//! [`LevelExtrapolation`] fits the finite-time bias laws to them by
+//! generalised least squares, which gives the bias at the top level and the
+//! extrapolated `λ_∞`. The result, a [`MultilevelEstimate`], carries an
+//! [`ErrorBudget`] of `λ_TL` (SEM, finite-time bias, method bias measured
+//! by pairing the top level with tangent dynamics, total), the chaotic
+//! fraction (classified at `T_0`) and the mean exponent of the chaotic
+//! initial conditions, each with its error. The estimator works on any
+//! [`LevelSource`]; [`EnsembleLevels`] is the billiard one (any table,
+//! both methods, both engines).
+//!
+//! Multilevel pays where the spread of the exponents has a floor that
+//! longer runs do not remove (a mixed phase space, with spin); where the
+//! spread falls like `1/T` (uniformly chaotic, α = 0) the corrections are
+//! as wide as the runs themselves and a plain ensemble is as cheap.
+//! [`Planner::plan_estimator`] predicts both from pilots and picks
+//! ([`EstimatorPlan`]: the kind, both plans, and why).
+//!
 //! # Work–precision
 //!
 //! Work–precision sets: for one scene, what each method and engine buys
@@ -149,19 +187,33 @@
 //! reference is not read as infinitely precise.
 
 mod convergence;
+mod ensemble_levels;
 mod error_budget;
+mod estimator_choice;
 mod finite_time_bias;
+mod level_extrapolation;
 mod measurement;
 mod method_bias;
+mod multilevel;
+mod multilevel_estimate;
 mod planner;
 mod work_precision;
 
 pub use convergence::{
     LcnTrace, convergence_estimates, format_mean_sem, lcn_trace, lcn_traces, trajectory_checkpoints,
 };
+pub use ensemble_levels::{
+    EnsembleLevels, SHORTEST_LEVEL, default_levels, level_seed, levels_below,
+};
 pub use error_budget::{ErrorBudget, Reference};
+pub use estimator_choice::{EstimatorKind, EstimatorPlan, MULTILEVEL_MARGIN, MultilevelPlan};
 pub use finite_time_bias::{BiasFit, BiasLaw, BiasRegime, FiniteTimeBias, MIN_CHECKPOINTS};
+pub use level_extrapolation::LevelExtrapolation;
 pub use measurement::{Measurement, dhf_product, normalised, paired_difference};
 pub use method_bias::MethodBias;
+pub use multilevel::{
+    LevelDraw, LevelSamples, LevelSource, LevelStats, Multilevel, giles_allocation,
+};
+pub use multilevel_estimate::MultilevelEstimate;
 pub use planner::{MethodPilot, PlannedRun, Planner, VarianceModel};
 pub use work_precision::{Budget, WorkPoint, work_precision};

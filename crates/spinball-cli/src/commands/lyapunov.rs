@@ -15,6 +15,7 @@ use spinball_geometry::Built;
 
 use crate::documents::{read_partial, write_partial};
 use crate::error::CliError;
+use crate::estimator_args::{EstimatorArgs, run_multilevel, write_multilevel};
 use crate::files::{check_writable, remove_regular};
 use crate::output::OutputArgs;
 use crate::run_args::RunArgs;
@@ -61,6 +62,8 @@ pub struct LyapunovArgs {
     pub out: OutputArgs,
     #[command(flatten)]
     pub checkpoint: CheckpointArgs,
+    #[command(flatten)]
+    pub estimator: EstimatorArgs,
 }
 
 /// What a run gave: the estimates of a whole run, or a shard's partial
@@ -295,8 +298,43 @@ fn remove_checkpoint(checkpoint: Option<&std::path::Path>, result: &std::path::P
 /// # Errors
 /// As [`run_ensembles`]; an output that cannot be written.
 pub fn lyapunov(args: &LyapunovArgs) -> Result<(), CliError> {
+    if let Some(options) = args.estimator.multilevel()? {
+        return lyapunov_multilevel(args, &options);
+    }
     match run_ensembles(&args.run, &args.out, &args.checkpoint)? {
         Outcome::Finished(estimates) => args.out.write_results(&estimates),
         Outcome::Shard => Ok(()),
+    }
+}
+
+/// `spinball lyapunov --estimator multilevel`: one multilevel estimate per
+/// α, printed, and written to --json if asked.
+fn lyapunov_multilevel(
+    args: &LyapunovArgs,
+    options: &spinball_analysis::precision::Multilevel,
+) -> Result<(), CliError> {
+    if args.run.shard.is_some() || args.checkpoint.resume {
+        return Err(CliError::Usage(
+            "--estimator multilevel plans its levels as it goes: it takes no --shard or --resume"
+                .into(),
+        ));
+    }
+    if args.out.csv.is_some() || args.out.npy.is_some() {
+        return Err(CliError::Usage(
+            "--estimator multilevel writes --json only (its levels have different numbers of initial conditions)".into(),
+        ));
+    }
+    args.out.check()?;
+    let mut points = Vec::new();
+    for ensemble in args.run.ensembles()? {
+        let point = run_multilevel(&ensemble, options)?;
+        if !args.out.quiet {
+            print(&format!("alpha = {}\n{}\n", point.alpha, point.estimate))?;
+        }
+        points.push(point);
+    }
+    match &args.out.json {
+        Some(path) => write_multilevel(path, &points),
+        None => Ok(()),
     }
 }

@@ -39,6 +39,7 @@ use spinball_core::{Sampler, SpinLaw, SpinLawError};
 use spinball_geometry::Table;
 
 use crate::error::CliError;
+use crate::estimator_args::{EstimatorArgs, run_multilevel, write_multilevel};
 
 use crate::documents::write_document;
 use crate::files::check_writable;
@@ -88,6 +89,8 @@ pub struct SweepArgs {
     /// Allow α > 1 (the mathematical extension towards no-slip).
     #[arg(long)]
     pub extended: bool,
+    #[command(flatten)]
+    pub estimator: EstimatorArgs,
 }
 
 impl SweepArgs {
@@ -142,9 +145,19 @@ fn write_sweep(path: &Path, doc: &SweepDocument) -> Result<(), CliError> {
 /// run or a write that fails later.
 pub fn sweep(args: &SweepArgs) -> Result<(), CliError> {
     let laws = args.laws()?;
-    let mut doc = SweepDocument::new(&args.table, args.method, args.sampler, args.seed);
     // Fail on an unwritable path now, not after the computation.
     check_writable("json", &args.json)?;
+    if let Some(options) = args.estimator.multilevel()? {
+        let mut points = Vec::new();
+        for law in laws {
+            let point = run_multilevel(&args.ensemble(law), &options)?;
+            print(&format!("alpha = {}\n{}\n", point.alpha, point.estimate))?;
+            points.push(point);
+            write_multilevel(&args.json, &points)?;
+        }
+        return print(&format!("wrote {}\n", args.json.display()));
+    }
+    let mut doc = SweepDocument::new(&args.table, args.method, args.sampler, args.seed);
     write_sweep(&args.json, &doc).map_err(|e| CliError::Usage(format!("--json: {e}")))?;
     // The rows on stdout; the document is written whatever becomes of
     // them (a full or closed stdout is reported after the run).

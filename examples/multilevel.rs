@@ -1,0 +1,215 @@
+//! Plain against multilevel ensembles at one target total error: wall time,
+//! stated total error and the deviation from the references of
+//! docs/ACCURACY.md, per scene, with the planner's choice and its reason.
+//!
+//! ```text
+//! cargo run --release --example multilevel -- [--quick] [--target 1e-3]
+//!     [--repeat N] [--threads N] [--seed S]
+//! ```
+//!
+//! For each scene (stadium a = 1 at α = 0.5 and 0, Sinai L = 2, R = 1 at
+//! α = 1; exact tangent dynamics in lanes) a pilot plans the plain run
+//! (`Planner::plan`) and the multilevel run of the same top length
+//! (`Planner::plan_estimator`); both are run `--repeat` times with seeds
+//! `S, S+1, …` (the plain run with its stop rule on total error, the
+//! multilevel run adaptively), and the medians are printed. To compare at
+//! **equal** error, each wall time is also scaled to the target, `t ·
+//! (error/target)²` (both estimators' work goes like `1/error²`), and the
+//! ratio plain/multilevel of those is the speed-up. `--quick` (CI): target
+//! 1%, small pilots, one repeat, a second or two.
+
+use std::time::Instant;
+
+use spinball::analysis::AnalysisError;
+use spinball::analysis::estimators::Method;
+use spinball::analysis::precision::{EnsembleLevels, Planner};
+use spinball::analysis::run::{Ensemble, Threads};
+use spinball::prelude::*;
+
+/// Scene, α, λ_ref ± SEM (docs/ACCURACY.md, 16 000-IC tangent references).
+const SCENES: [(&str, f64, f64, f64); 3] = [
+    ("stadium:a=1", 0.5, 0.18212, 0.00047),
+    ("sinai:L=2,R=1", 1.0, 0.10296, 0.00031),
+    ("stadium:a=1", 0.0, 0.42965, 0.00007),
+];
+
+struct Options {
+    quick: bool,
+    target: f64,
+    repeat: u64,
+    threads: Threads,
+    seed: u64,
+}
+
+fn options() -> Result<Options, String> {
+    let mut o = Options {
+        quick: false,
+        target: 1e-3,
+        repeat: 3,
+        threads: Threads::All,
+        seed: 2030,
+    };
+    let mut args = std::env::args().skip(1);
+    while let Some(a) = args.next() {
+        let mut value = |name: &str| args.next().ok_or_else(|| format!("{name} needs a value"));
+        match a.as_str() {
+            "--quick" => o.quick = true,
+            "--target" => {
+                o.target = value("--target")?
+                    .parse()
+                    .map_err(|e| format!("--target: {e}"))?
+            }
+            "--repeat" => {
+                o.repeat = value("--repeat")?
+                    .parse()
+                    .map_err(|e| format!("--repeat: {e}"))?
+            }
+            "--seed" => {
+                o.seed = value("--seed")?
+                    .parse()
+                    .map_err(|e| format!("--seed: {e}"))?
+            }
+            "--threads" => {
+                o.threads = Threads::Fixed(
+                    value("--threads")?
+                        .parse()
+                        .map_err(|e| format!("--threads: {e}"))?,
+                );
+            }
+            other => return Err(format!("unknown argument {other}")),
+        }
+    }
+    if o.quick {
+        o.target = 1e-2;
+        o.repeat = 1;
+    }
+    if !(o.target > 0.0 && o.target.is_finite()) || o.repeat == 0 {
+        return Err("--target must be > 0 and --repeat >= 1".into());
+    }
+    Ok(o)
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        0.5 * (v[n / 2 - 1] + v[n / 2])
+    }
+}
+
+/// One run's wall time, stated total error (absolute) and value.
+struct Outcome {
+    wall: f64,
+    error: f64,
+    value: f64,
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let o = options()?;
+    let (pilot_ics, pilot_t, ml_pilot) = if o.quick {
+        (64, vec![250, 500, 1_000, 2_000], 32)
+    } else {
+        (256, vec![1_000, 2_000, 4_000, 8_000], 64)
+    };
+    println!(
+        "target {:.2}% total error, {} repeat(s), medians; wall times scaled to the target as t·(error/target)²",
+        100.0 * o.target,
+        o.repeat
+    );
+    for (spec, alpha, lref, lref_sem) in SCENES {
+        let table: Table = spec.parse()?;
+        let scene = Ensemble::new(table, SpinLaw::new(alpha)?)
+            .with_method(Method::Tangent)
+            .with_threads(o.threads)
+            .with_seed(o.seed + 1000);
+        let start = Instant::now();
+        let planner = Planner::pilot(
+            &scene.clone().with_ics(pilot_ics),
+            &[Method::Tangent],
+            &pilot_t,
+        )?;
+        let choice = planner.plan_estimator(&scene, o.target, ml_pilot)?;
+        let planning = start.elapsed().as_secs_f64();
+        println!("\n{spec} α = {alpha} (λ_ref {lref} ± {lref_sem}); planning {planning:.2} s");
+        println!("  planner: {choice}");
+        let plain_plan = choice.plain;
+        let (mut plain, mut multi) = (Vec::new(), Vec::new());
+        for r in 0..o.repeat {
+            let seeded = scene.clone().with_seed(o.seed + r);
+            let t = Instant::now();
+            let est = plain_plan
+                .ensemble(seeded.clone(), 4 * plain_plan.ics)
+                .run_until(&plain_plan.stop_rule(plain_plan.ics.div_ceil(8).max(64)))?;
+            let wall = t.elapsed().as_secs_f64();
+            let error = est.sem.hypot(plain_plan.bias);
+            plain.push(Outcome {
+                wall,
+                error,
+                value: est.mean,
+            });
+            if let Some(ml) = &choice.multilevel {
+                let t = Instant::now();
+                // Where the levels' own bias fit finds the bias at the plain
+                // run's length above the target (the pilot saw only short
+                // runs), run the levels four times longer.
+                let e = match ml.estimator().run(&ml.source(seeded.clone())?) {
+                    Err(AnalysisError::TargetUnreachable { floor, .. }) => {
+                        let top = 4 * plain_plan.collisions;
+                        println!(
+                            "    multilevel: bias {floor:.2e} at T = {} above target; levels up to {top}",
+                            plain_plan.collisions
+                        );
+                        ml.estimator().run(&EnsembleLevels::up_to(
+                            seeded.with_method(Method::Tangent),
+                            top,
+                        )?)?
+                    }
+                    other => other?,
+                };
+                let wall = t.elapsed().as_secs_f64();
+                let l = e.lambda();
+                multi.push(Outcome {
+                    wall,
+                    error: e.budget.total.value,
+                    value: l.value,
+                });
+                if r == 0 {
+                    print!(
+                        "  multilevel, first repeat:\n    {}",
+                        e.to_string().replace('\n', "\n    ")
+                    );
+                    println!();
+                }
+            }
+        }
+        let report = |name: &str, runs: &[Outcome]| -> f64 {
+            let wall = median(runs.iter().map(|x| x.wall).collect());
+            let err = median(runs.iter().map(|x| x.error / lref).collect());
+            let dev = median(
+                runs.iter()
+                    .map(|x| (x.value - lref) / x.error.hypot(lref_sem))
+                    .collect(),
+            );
+            let scaled = median(
+                runs.iter()
+                    .map(|x| x.wall * (x.error / lref / o.target).powi(2))
+                    .collect(),
+            );
+            println!(
+                "  {name:<10} wall {wall:8.3} s  stated total error {:.3}%  (λ_T − λ_ref)/(total ⊕ σ_ref) {dev:+.2}  wall at target {scaled:8.3} s",
+                100.0 * err
+            );
+            scaled
+        };
+        let p = report("plain", &plain);
+        if multi.is_empty() {
+            println!("  multilevel: no plan (the plain run is too short for four levels)");
+        } else {
+            let m = report("multilevel", &multi);
+            println!("  speed-up plain/multilevel at equal error: {:.2}", p / m);
+        }
+    }
+    Ok(())
+}
