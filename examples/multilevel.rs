@@ -143,11 +143,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 .ensemble(seeded.clone(), 4 * plain_plan.ics)
                 .run_until(&plain_plan.stop_rule(plain_plan.ics.div_ceil(8).max(64)))?;
             let wall = t.elapsed().as_secs_f64();
-            let error = est.sem.hypot(plain_plan.bias);
+            let error = est.sem().hypot(plain_plan.bias);
             plain.push(Outcome {
                 wall,
                 error,
-                value: est.mean,
+                value: est.mean(),
             });
             if let Some(ml) = &choice.multilevel {
                 let t = Instant::now();

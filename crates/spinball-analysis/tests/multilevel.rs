@@ -166,7 +166,7 @@ fn agrees_with_plain_ensembles_on_three_scenes() {
             "{name}: {l:?} vs {plain:?}"
         );
     };
-    let plain = |e: spinball_analysis::run::LyapunovEstimate| (e.mean, e.sem);
+    let plain = |e: spinball_analysis::run::LyapunovEstimate| (e.mean(), e.sem());
 
     let s = stadium(0.5).with_method(Method::Tangent).with_seed(11);
     let ml = options
