@@ -2,7 +2,8 @@
 //!
 //! Lyapunov exponents over ensembles of initial conditions (`lyapunov`),
 //! their distribution (`ftle`), the full spectrum (`spectrum`), single
-//! trajectories (`trajectory`), tables (`table`), and campaigns on a
+//! trajectories (`trajectory`), tables (`table`), phase space (`section`,
+//! `ftle-map`, `kac`), and campaigns on a
 //! cluster: every ensemble command runs one shard with `--shard K/N`,
 //! `merge` combines the shards into the unsharded result bitwise, `slurm`
 //! writes the job array. Tables are built-in specs or table files (TOML or
@@ -18,6 +19,7 @@ mod documents;
 mod error;
 mod files;
 mod output;
+mod phase_args;
 mod run_args;
 mod stdout;
 mod table_arg;
@@ -29,8 +31,11 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 use crate::commands::ftle::{FtleArgs, ftle};
+use crate::commands::ftle_map::{FtleMapArgs, ftle_map};
+use crate::commands::kac::{KacArgs, kac};
 use crate::commands::lyapunov::{LyapunovArgs, lyapunov};
 use crate::commands::merge::{MergeArgs, merge};
+use crate::commands::section::{SectionArgs, section};
 use crate::commands::slurm::{SlurmArgs, slurm};
 use crate::commands::spectrum::{SpectrumArgs, spectrum};
 use crate::commands::sweep::{SweepArgs, sweep};
@@ -75,6 +80,15 @@ enum Command {
     /// λ(α) on one built-in table with every setting explicit, rewriting a
     /// JSON document after each α: the machine interface for scripts.
     Sweep(Box<SweepArgs>),
+    /// The Birkhoff section of a few orbits: every collision as
+    /// (s, sin θ, v∥, |v|, u, wall, Q).
+    Section(Box<SectionArgs>),
+    /// The FTLE of every start on a grid of the section (fixed spin or
+    /// fixed Q), with the predicted bouncing-ball island; shards merge.
+    FtleMap(Box<FtleMapArgs>),
+    /// Mean return times to a region of the section against Kac's lemma,
+    /// orbits started from the invariant measure.
+    Kac(Box<KacArgs>),
 }
 
 fn main() -> ExitCode {
@@ -91,6 +105,9 @@ fn main() -> ExitCode {
         Command::Merge(a) => merge(a),
         Command::Slurm(a) => slurm(a),
         Command::Sweep(a) => sweep(a),
+        Command::Section(a) => section(a),
+        Command::FtleMap(a) => ftle_map(a),
+        Command::Kac(a) => kac(a),
     };
     match result {
         Ok(()) | Err(CliError::StdoutClosed) => ExitCode::SUCCESS,

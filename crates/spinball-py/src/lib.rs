@@ -26,6 +26,7 @@ pub mod args;
 pub mod billiard;
 pub mod errors;
 pub mod ftle;
+pub mod phase_space;
 pub mod results;
 pub mod runs;
 pub mod tables;
@@ -63,5 +64,6 @@ fn _spinball(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(runs::lyapunov, m)?)?;
     m.add_function(wrap_pyfunction!(runs::alpha_sweep, m)?)?;
     m.add_function(wrap_pyfunction!(runs::spectrum, m)?)?;
+    phase_space::register(m)?;
     Ok(())
 }

@@ -7,16 +7,18 @@ use std::path::{Path, PathBuf};
 use clap::Args;
 use spinball_analysis::run::{RunDifference, merge_partials};
 
+use crate::commands::ftle_map::{FTLE_MAP_PARTIAL_KIND, merge_maps};
 use crate::commands::spectrum::{SPECTRUM_PARTIAL_KIND, SpectrumDocument};
 use crate::documents::{PARTIAL_KIND, PartialDocument};
 use crate::error::CliError;
 use crate::output::OutputArgs;
+use crate::phase_args::PhaseOutput;
 
 /// The arguments of `spinball merge`.
 #[derive(Debug, Clone, Args)]
 pub struct MergeArgs {
     /// The partial results (the --json files of every shard of a
-    /// `lyapunov`, `ftle` or `spectrum` run), in any order.
+    /// `lyapunov`, `ftle`, `spectrum` or `ftle-map` run), in any order.
     #[arg(required = true)]
     pub parts: Vec<PathBuf>,
     #[command(flatten)]
@@ -40,6 +42,15 @@ fn kind(path: &Path) -> Result<String, CliError> {
 pub fn merge(args: &MergeArgs) -> Result<(), CliError> {
     args.out.check()?;
     let first_kind = kind(&args.parts[0])?;
+    if first_kind == FTLE_MAP_PARTIAL_KIND {
+        let out = PhaseOutput {
+            json: args.out.json.clone(),
+            csv: args.out.csv.clone(),
+            npy: args.out.npy.clone(),
+            quiet: args.out.quiet,
+        };
+        return merge_maps(&args.parts, &out);
+    }
     if first_kind == SPECTRUM_PARTIAL_KIND {
         let docs = args
             .parts

@@ -2,8 +2,11 @@
 //! arguments and calls the library.
 
 pub mod ftle;
+pub mod ftle_map;
+pub mod kac;
 pub mod lyapunov;
 pub mod merge;
+pub mod section;
 pub mod slurm;
 pub mod spectrum;
 pub mod sweep;
