@@ -40,7 +40,7 @@ pub struct FtleMapPart {
 }
 
 /// The cells of shard `shard` of the FTLE map of `table` under `law`
-/// ([`ftle_map`](super::ftle_map) is the whole map as one shard).
+/// ([`ftle_map`](fn@super::ftle_map) is the whole map as one shard).
 ///
 /// ```
 /// use spinball_analysis::phase_space::{FtleMapOptions, FtleMapPart, Slice, ftle_map, ftle_map_part};
@@ -59,7 +59,7 @@ pub struct FtleMapPart {
 /// ```
 ///
 /// # Errors
-/// As [`ftle_map`](super::ftle_map); a failing start's error carries its
+/// As [`ftle_map`](fn@super::ftle_map); a failing start's error carries its
 /// cell index `j·columns + i`.
 pub fn ftle_map_part<B: Boundary + Sync>(
     table: B,
@@ -148,7 +148,7 @@ impl FtleMapPart {
     }
 
     /// Join the parts of one map (in any order) into the whole map, the map
-    /// [`ftle_map`](super::ftle_map) gives in one run, bitwise.
+    /// [`ftle_map`](fn@super::ftle_map) gives in one run, bitwise.
     ///
     /// # Errors
     /// [`AnalysisError::InvalidOption`] (`shards`) for no parts, parts of
