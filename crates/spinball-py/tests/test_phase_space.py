@@ -135,12 +135,13 @@ def test_the_command_line_gives_the_same_map_and_section(tmp_path):
     )
     m = sb.ftle_map("stadium:a=1", 0.5, columns=12, rows=10, q=0.1, collisions=300, seed=4)
     cli = np.load(npy)
-    # The same cells off the shell, and the same exponents to the last bits
-    # that chaos amplifies: the command line built in the test profile and
-    # the extension built by maturin differ there for every tangent run
-    # (`lyapunov(method="tangent")` against `spinball lyapunov --method
-    # tangent` too), by at most 2e-3 here; sections, which have no
-    # tangent, agree bitwise (below).
+    # The same cells off the shell, and the same exponents up to what chaos
+    # makes of last-bit differences: the command line runs every table as
+    # `Built` (spec or file), the Python package a built-in one as `Table`,
+    # and those two differ in the last bits on the same start (so do
+    # `spinball lyapunov` and `spinball.lyapunov`; `spinball sweep`, which
+    # takes a `Table`, agrees bitwise); at most 2e-3 here. Sections agree
+    # bitwise (below).
     assert np.array_equal(np.isnan(cli), np.isnan(m["exponents"]))
     assert np.allclose(cli, m["exponents"], rtol=0, atol=5e-3, equal_nan=True)
     sec_npy = tmp_path / "section.npy"
