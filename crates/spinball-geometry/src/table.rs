@@ -334,6 +334,12 @@ impl Boundary for Built {
             Built::Segments(t) => t.area(),
         }
     }
+    fn unit_length(&self) -> f64 {
+        match self {
+            Built::Table(t) => t.unit_length(),
+            Built::Segments(t) => t.unit_length(),
+        }
+    }
     fn curved_length(&self) -> f64 {
         match self {
             Built::Table(t) => t.curved_length(),
