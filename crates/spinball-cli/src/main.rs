@@ -3,7 +3,8 @@
 //! Lyapunov exponents over ensembles of initial conditions (`lyapunov`),
 //! their distribution (`ftle`), the full spectrum (`spectrum`), single
 //! trajectories (`trajectory`), tables (`table`), periodic orbits and
-//! their stability (`orbits`), and campaigns on a
+//! their stability (`orbits`), phase space (`section`, `ftle-map`, `kac`),
+//! and campaigns on a
 //! cluster: every ensemble command runs one shard with `--shard K/N`,
 //! `merge` combines the shards into the unsharded result bitwise, `slurm`
 //! writes the job array. Tables are built-in specs or table files (TOML or
@@ -20,6 +21,7 @@ mod error;
 mod estimator_args;
 mod files;
 mod output;
+mod phase_args;
 mod run_args;
 mod stdout;
 mod table_arg;
@@ -31,9 +33,12 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 use crate::commands::ftle::{FtleArgs, ftle};
+use crate::commands::ftle_map::{FtleMapArgs, ftle_map};
+use crate::commands::kac::{KacArgs, kac};
 use crate::commands::lyapunov::{LyapunovArgs, lyapunov};
 use crate::commands::merge::{MergeArgs, merge};
 use crate::commands::orbits::{OrbitsArgs, orbits};
+use crate::commands::section::{SectionArgs, section};
 use crate::commands::slurm::{SlurmArgs, slurm};
 use crate::commands::spectrum::{SpectrumArgs, spectrum};
 use crate::commands::sweep::{SweepArgs, sweep};
@@ -81,6 +86,15 @@ enum Command {
     /// λ(α) on one built-in table with every setting explicit, rewriting a
     /// JSON document after each α: the machine interface for scripts.
     Sweep(Box<SweepArgs>),
+    /// The Birkhoff section of a few orbits: every collision as
+    /// (s, sin θ, v∥, |v|, u, wall, Q).
+    Section(Box<SectionArgs>),
+    /// The FTLE of every start on a grid of the section (fixed spin or
+    /// fixed Q), with the predicted bouncing-ball island; shards merge.
+    FtleMap(Box<FtleMapArgs>),
+    /// Mean return times to a region of the section against Kac's lemma,
+    /// orbits started from the invariant measure.
+    Kac(Box<KacArgs>),
 }
 
 fn main() -> ExitCode {
@@ -98,6 +112,9 @@ fn main() -> ExitCode {
         Command::Slurm(a) => slurm(a),
         Command::Sweep(a) => sweep(a),
         Command::Orbits(a) => orbits(a),
+        Command::Section(a) => section(a),
+        Command::FtleMap(a) => ftle_map(a),
+        Command::Kac(a) => kac(a),
     };
     match result {
         Ok(()) | Err(CliError::StdoutClosed) => ExitCode::SUCCESS,

@@ -334,6 +334,12 @@ impl Boundary for Built {
             Built::Segments(t) => t.area(),
         }
     }
+    fn unit_length(&self) -> f64 {
+        match self {
+            Built::Table(t) => t.unit_length(),
+            Built::Segments(t) => t.unit_length(),
+        }
+    }
     fn curved_length(&self) -> f64 {
         match self {
             Built::Table(t) => t.curved_length(),
@@ -368,5 +374,39 @@ impl fmt::Display for Built {
             Some(shape) => shape.fmt(f),
             None => Ok(()),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn built_tables_keep_the_unit_length_of_what_they_wrap() {
+        // A tangent vector is measured in the table's unit length; a
+        // `Built` that fell back to the default (half its diagonal) would
+        // measure the stadium in units of 2, not 1.
+        for spec in [
+            "stadium:a=1",
+            "sinai:L=2,R=1",
+            "circle:R=3",
+            "rectangle:L=1.5,H=1",
+        ] {
+            let table: Table = spec.parse().unwrap();
+            assert_eq!(
+                Built::Table(table).unit_length(),
+                table.unit_length(),
+                "{spec}"
+            );
+        }
+        let square = SegmentTable::polygon(&[
+            DVec2::new(0.0, 0.0),
+            DVec2::new(1.0, 0.0),
+            DVec2::new(1.0, 1.0),
+            DVec2::new(0.0, 1.0),
+        ])
+        .unwrap();
+        let unit = square.unit_length();
+        assert_eq!(Built::Segments(square).unit_length(), unit);
     }
 }

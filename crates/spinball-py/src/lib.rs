@@ -28,6 +28,7 @@ pub mod errors;
 pub mod ftle;
 pub mod orbits;
 pub mod multilevel;
+pub mod phase_space;
 pub mod results;
 pub mod runs;
 pub mod tables;
@@ -69,5 +70,6 @@ fn _spinball(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(runs::alpha_sweep, m)?)?;
     m.add_function(wrap_pyfunction!(runs::spectrum, m)?)?;
     m.add_function(wrap_pyfunction!(orbits::periodic_orbits, m)?)?;
+    phase_space::register(m)?;
     Ok(())
 }

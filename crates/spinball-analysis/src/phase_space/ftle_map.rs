@@ -6,10 +6,11 @@
 use spinball_core::{SpinLaw, State};
 use spinball_geometry::Boundary;
 
+use super::ftle_map_shards::ftle_map_part;
 use super::section::state_on_section;
 use crate::error::AnalysisError;
-use crate::estimators::{CHAOS_THRESHOLD, ChaoticFraction, Method};
-use crate::run::{Ensemble, Threads};
+use crate::estimators::{CHAOS_THRESHOLD, ChaoticFraction};
+use crate::run::{Shard, Threads};
 
 /// Which slice of the three-dimensional section a map covers.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -239,7 +240,7 @@ fn cell_start<B: Boundary>(
 /// [`AnalysisError::InvalidOption`] for a grid with no cells (or more than
 /// 2³² of them), zero collisions, a non-finite slice, `αu² ≥ 1` for
 /// [`Slice::Spin`], α = 0 for [`Slice::Q`] (the spin decouples and `Q = v∥`
-/// fixes the row), a slice with no cell on the shell, a non-finite
+/// fixes the row), a slice with fewer than two cells on the shell, a non-finite
 /// threshold, a table that cannot place points by arc length; otherwise the
 /// first failing start's error with its cell index `j·columns + i`.
 pub fn ftle_map<B: Boundary + Sync>(
@@ -247,6 +248,19 @@ pub fn ftle_map<B: Boundary + Sync>(
     law: SpinLaw,
     options: &FtleMapOptions,
 ) -> Result<FtleMap, AnalysisError> {
+    ftle_map_part(table, law, options, Shard::WHOLE).map(|part| part.map)
+}
+
+/// The empty map of `options` (every cell `None`), the starts of its cells
+/// on the energy shell in row-major order, and the cell of each start.
+///
+/// # Errors
+/// As [`ftle_map`], before any trajectory is run.
+pub(super) fn grid_starts<B: Boundary>(
+    table: &B,
+    law: &SpinLaw,
+    options: &FtleMapOptions,
+) -> Result<(FtleMap, Vec<State>, Vec<usize>), AnalysisError> {
     let (nc, nr) = (options.columns, options.rows);
     let cells = nc.checked_mul(nr).filter(|&n| n > 0 && n <= 1 << 32);
     let Some(cells) = cells else {
@@ -255,6 +269,9 @@ pub fn ftle_map<B: Boundary + Sync>(
             format!("{nc} × {nr} cells: need 1 to 2^32 cells"),
         ));
     };
+    if options.collisions == 0 {
+        return Err(AnalysisError::invalid("collisions", "must be > 0"));
+    }
     if !options.threshold.is_finite() {
         return Err(AnalysisError::invalid(
             "threshold",
@@ -277,7 +294,7 @@ pub fn ftle_map<B: Boundary + Sync>(
         }
         _ => {}
     }
-    let mut map = FtleMap {
+    let map = FtleMap {
         options: *options,
         alpha,
         perimeter: table.perimeter(),
@@ -287,7 +304,7 @@ pub fn ftle_map<B: Boundary + Sync>(
     let mut cell_of = Vec::with_capacity(cells);
     for j in 0..nr {
         for i in 0..nc {
-            if let Some(state) = cell_start(&table, &law, options.slice, map.s(i), map.row(j))? {
+            if let Some(state) = cell_start(table, law, options.slice, map.s(i), map.row(j))? {
                 starts.push(state);
                 cell_of.push(j * nc + i);
             }
@@ -303,25 +320,5 @@ pub fn ftle_map<B: Boundary + Sync>(
             ),
         ));
     }
-    let n = starts.len() as u64;
-    let ensemble = Ensemble::from_states(&table, law, starts)
-        .with_method(Method::Tangent)
-        .with_collisions(options.collisions)
-        .with_seed(options.seed)
-        .with_threads(options.threads);
-    let stats = ensemble.trajectories(0..n).map_err(|e| match e {
-        AnalysisError::Launch { index, source } => AnalysisError::Launch {
-            index: cell_of[index as usize] as u64,
-            source,
-        },
-        AnalysisError::Step { index, source } => AnalysisError::Step {
-            index: cell_of[index as usize] as u64,
-            source,
-        },
-        other => other,
-    })?;
-    for t in stats {
-        map.exponents[cell_of[t.index as usize]] = Some(t.exponent);
-    }
-    Ok(map)
+    Ok((map, starts, cell_of))
 }

@@ -10,7 +10,8 @@
 //!   times against Kac's lemma ([`orbit_returns`], [`kac_comparison`]), a
 //!   test of ergodicity without a Lyapunov exponent;
 //! - FTLE maps over a grid of the section ([`ftle_map`], [`FtleMap`],
-//!   [`Slice`]), which show the regular islands;
+//!   [`Slice`]), which show the regular islands, computed whole or in
+//!   shards that join bitwise ([`ftle_map_part`], [`FtleMapPart::merge`]);
 //! - the islands explained: the bouncing-ball island of two facing flats
 //!   ([`FacingFlats`], [`pair_rotation`], [`BouncingShare`]), one table seen
 //!   three ways ([`island_map`]), and who sits on the islands
@@ -204,6 +205,7 @@
 
 mod bouncing_ball;
 mod ftle_map;
+mod ftle_map_shards;
 mod invariant_measure;
 mod island_map;
 mod islands;
@@ -212,6 +214,7 @@ mod section;
 
 pub use bouncing_ball::{BouncingShare, FacingFlats, FlatBand, pair_rotation};
 pub use ftle_map::{FtleMap, FtleMapOptions, Slice, ftle_map};
+pub use ftle_map_shards::{FtleMapPart, ftle_map_part};
 pub use invariant_measure::{InvariantMeasure, SectionBox};
 pub use island_map::{IslandMap, island_map};
 pub use islands::{
@@ -219,8 +222,9 @@ pub use islands::{
     trajectory_profiles,
 };
 pub use return_time::{
-    KacComparison, OrbitReturns, invariant_start, kac_comparison, orbit_returns,
+    KacComparison, OrbitReturns, invariant_start, invariant_starts, kac_comparison, orbit_returns,
 };
 pub use section::{
-    Section, SectionPoint, sampled_sections, section_points, sections, spin_slice, state_on_section,
+    SECTION_COLUMNS, Section, SectionPoint, sampled_sections, section_points, section_rows,
+    sections, spin_slice, state_on_section,
 };

@@ -90,6 +90,26 @@ pub fn invariant_start<B: Boundary + ?Sized, R: rand::Rng + ?Sized>(
     }
 }
 
+/// The starts `indices` drawn from the invariant measure of `table` under
+/// `law` (`|V| = 1`), start `i` from the stream `ic_rng(seed, i)`: the
+/// orbits [`kac_comparison`] runs, and a sampler of the measure for any
+/// other use (sections, ensembles over explicit states).
+///
+/// # Errors
+/// As [`InvariantMeasure::new`] and [`state_on_section`] (a table that
+/// cannot place points by arc length).
+pub fn invariant_starts<B: Boundary + ?Sized>(
+    table: &B,
+    law: &SpinLaw,
+    seed: u64,
+    indices: std::ops::Range<u64>,
+) -> Result<Vec<State>, AnalysisError> {
+    let measure = InvariantMeasure::new(table, law)?;
+    indices
+        .map(|i| invariant_start(table, law, &measure, &mut ic_rng(seed, i)))
+        .collect()
+}
+
 /// Mean return times per orbit against Kac's `1/μ(A)`.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -244,6 +264,18 @@ mod tests {
             orbits,
             mean_return: Some(Measurement::new(4.4, 0.2)),
         }
+    }
+
+    #[test]
+    fn invariant_starts_are_on_the_shell_and_depend_only_on_their_index() {
+        use spinball_geometry::Stadium;
+        let (table, law) = (Stadium::new(1.0).unwrap(), SpinLaw::new(0.5).unwrap());
+        let all = invariant_starts(&table, &law, 4, 0..6).unwrap();
+        assert_eq!(invariant_starts(&table, &law, 4, 3..6).unwrap(), all[3..]);
+        for s in &all {
+            assert!((s.energy(&law) - 0.5).abs() < 1e-14);
+        }
+        assert_ne!(all[0], all[1]);
     }
 
     #[test]

@@ -164,6 +164,49 @@ pub fn sampled_sections<B: Boundary + Sync>(
     sections(billiard, &starts, collisions, threads)
 }
 
+/// The names of the columns of [`section_rows`]: the orbit, then the
+/// coordinates of the point (`sin_theta = v∥/|v|`, `u` the spin, `wall`
+/// the index of the wall hit), all just before the collision.
+pub const SECTION_COLUMNS: [&str; 8] = [
+    "orbit",
+    "s",
+    "sin_theta",
+    "v_par",
+    "speed",
+    "u",
+    "wall",
+    "q",
+];
+
+/// The points of `orbits` as rows of [`SECTION_COLUMNS`], orbit by orbit
+/// in collision order; `keep` selects the points (`|_| true` for all, or
+/// a spin slice, as [`spin_slice`]). The table a front writes as CSV or
+/// NPY, or hands to NumPy.
+#[must_use]
+pub fn section_rows(
+    orbits: &[Vec<SectionPoint>],
+    keep: impl Fn(&SectionPoint) -> bool,
+) -> Vec<[f64; 8]> {
+    orbits
+        .iter()
+        .enumerate()
+        .flat_map(|(k, orbit)| orbit.iter().map(move |p| (k, p)))
+        .filter(|(_, p)| keep(p))
+        .map(|(k, p)| {
+            [
+                k as f64,
+                p.s,
+                p.sin_theta(),
+                p.v_par,
+                p.speed,
+                p.spin,
+                f64::from(p.wall),
+                p.q,
+            ]
+        })
+        .collect()
+}
+
 /// The points of `orbits` in the slice `|√α u| < half_width` of the spin
 /// (`√α u` is the spin's share of `|V|`, so the slice is the same fraction
 /// of the shell at every α), in orbit order: the two-dimensional section
@@ -286,5 +329,16 @@ mod tests {
         // |√α u| ≤ |V| = 1 on the paper's shell: a slice of half-width 1.01
         // keeps every point.
         assert_eq!(spin_slice(&orbits, 0.5, 1.01).len(), 2000);
+        // The rows of the slice are its points, tagged by orbit.
+        let rows = section_rows(&orbits, |p| (0.5f64.sqrt() * p.spin).abs() < 0.2);
+        assert_eq!(rows.len(), slice.len());
+        assert!(
+            rows.iter()
+                .zip(&slice)
+                .all(|(r, p)| r[1] == p.s && r[5] == p.spin)
+        );
+        assert!(
+            rows.windows(2).all(|w| w[0][0] <= w[1][0]) && rows[0].len() == SECTION_COLUMNS.len()
+        );
     }
 }

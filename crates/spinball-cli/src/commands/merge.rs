@@ -9,8 +9,10 @@ use clap::Args;
 use spinball_analysis::report::{Document, PartialDocument, SpectrumDocument};
 use spinball_analysis::run::MergeError;
 
+use crate::commands::ftle_map::{FTLE_MAP_PARTIAL_KIND, merge_maps};
 use crate::commands::spectrum::write_spectrum;
 use crate::documents::read_document;
+use crate::phase_args::PhaseOutput;
 use crate::error::CliError;
 use crate::output::OutputArgs;
 
@@ -18,7 +20,7 @@ use crate::output::OutputArgs;
 #[derive(Debug, Clone, Args)]
 pub struct MergeArgs {
     /// The partial results (the --json files of every shard of a
-    /// `lyapunov`, `ftle` or `spectrum` run), in any order.
+    /// `lyapunov`, `ftle`, `spectrum` or `ftle-map` run), in any order.
     #[arg(required = true)]
     pub parts: Vec<PathBuf>,
     #[command(flatten)]
@@ -48,6 +50,15 @@ fn different(first: &Path, path: &Path, e: MergeError) -> CliError {
     }
 }
 
+/// Whether `path` holds the shard of an FTLE map (a document of the
+/// command line's own kind, not of the library's result schema).
+fn is_ftle_map_part(path: &Path) -> bool {
+    std::fs::read_to_string(path)
+        .ok()
+        .and_then(|text| serde_json::from_str::<serde_json::Value>(&text).ok())
+        .is_some_and(|v| v["kind"] == FTLE_MAP_PARTIAL_KIND)
+}
+
 /// `spinball merge`.
 ///
 /// # Errors
@@ -56,6 +67,15 @@ fn different(first: &Path, path: &Path, e: MergeError) -> CliError {
 pub fn merge(args: &MergeArgs) -> Result<(), CliError> {
     args.out.check()?;
     let first_path = &args.parts[0];
+    if is_ftle_map_part(first_path) {
+        let out = PhaseOutput {
+            json: args.out.json.clone(),
+            csv: args.out.csv.clone(),
+            npy: args.out.npy.clone(),
+            quiet: args.out.quiet,
+        };
+        return merge_maps(&args.parts, &out);
+    }
     match read_document(first_path)? {
         Document::LyapunovPartial(first) => {
             let mut docs = vec![first];

@@ -2,9 +2,12 @@
 //! arguments and calls the library.
 
 pub mod ftle;
+pub mod ftle_map;
+pub mod kac;
 pub mod lyapunov;
 pub mod merge;
 pub mod orbits;
+pub mod section;
 pub mod slurm;
 pub mod spectrum;
 pub mod sweep;

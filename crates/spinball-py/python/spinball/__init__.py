@@ -7,7 +7,11 @@ the tables, single trajectories as NumPy arrays, and ensemble estimates of
 the largest Lyapunov exponent (``lyapunov``, ``alpha_sweep``), its
 distribution (``LyapunovResult.ftle()``) and the full spectrum
 (``spectrum``), with standard errors, the cost and the parameters of every
-number. Exponents are per unit time at energy ½ (the paper's units: J. S.
+number; and phase space as NumPy arrays: Birkhoff sections (``section``),
+FTLE maps at fixed spin or fixed Q with the predicted bouncing-ball island
+(``ftle_map``), return times against Kac's lemma (``kac``), starts drawn
+from the invariant measure of the collision map (``invariant_states``) and
+the bouncing-ball prediction (``bouncing_ball``, ``pair_rotation``). Exponents are per unit time at energy ½ (the paper's units: J. S.
 Lund, J. Murugan, J. P. Shock, *Spinning Billiards and Chaos*,
 arXiv:2505.15335).
 
@@ -45,10 +49,16 @@ from ._spinball import (
     Trajectory,
     __version__,
     alpha_sweep,
+    bouncing_ball,
+    ftle_map,
+    invariant_states,
+    kac,
     lyapunov,
+    pair_rotation,
     plus_minus,
     periodic_orbits,
     read_results,
+    section,
     spectrum,
     table,
     table_file,
@@ -75,10 +85,16 @@ __all__ = [
     "Trajectory",
     "__version__",
     "alpha_sweep",
+    "bouncing_ball",
+    "ftle_map",
+    "invariant_states",
+    "kac",
     "lyapunov",
+    "pair_rotation",
     "plus_minus",
     "periodic_orbits",
     "read_results",
+    "section",
     "spectrum",
     "table",
     "table_file",

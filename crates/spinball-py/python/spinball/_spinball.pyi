@@ -356,3 +356,71 @@ class MultilevelResult:
     def wall_time_s(self) -> float: ...
     @property
     def levels(self) -> List[Dict[str, float]]: ...
+def section(
+    table: TableLike,
+    alpha: float,
+    *,
+    orbits: int = 8,
+    collisions: int = 1000,
+    seed: int = 0,
+    sampler: Optional[str] = None,
+    spin_slice: Optional[float] = None,
+    threads: Optional[int] = None,
+    extended: bool = False,
+) -> Dict[str, np.ndarray]:
+    """The Birkhoff section of ``orbits`` orbits: one entry per collision in
+    ``orbit``, ``s``, ``sin_theta``, ``v_par``, ``speed``, ``u``, ``wall``, ``q``
+    (values just before the collision). ``sampler``: ``"paper"`` (default),
+    ``"microcanonical"`` or ``"invariant"``; ``spin_slice=W`` keeps ``|√α u| < W``."""
+
+def ftle_map(
+    table: TableLike,
+    alpha: float,
+    *,
+    columns: int = 64,
+    rows: int = 64,
+    spin: Optional[float] = None,
+    q: Optional[float] = None,
+    collisions: int = 2000,
+    seed: int = 0,
+    threshold: float = 0.01,
+    threads: Optional[int] = None,
+    extended: bool = False,
+) -> Dict[str, Any]:
+    """The FTLE of a ``rows × columns`` grid of starts on the section at fixed
+    ``spin`` (default 0) or fixed ``q``: ``exponents`` (NaN off the shell),
+    ``s``, ``row``, counts, the chaotic fraction, and ``predicted`` (the
+    bouncing-ball cells on a stadium, else ``None``)."""
+
+def kac(
+    table: TableLike,
+    alpha: float,
+    *,
+    s: Tuple[float, float],
+    v_par: Tuple[float, float] = (-1.0, 1.0),
+    w: Optional[Tuple[float, float]] = None,
+    orbits: int = 16,
+    collisions: int = 10_000,
+    seed: int = 0,
+    threads: Optional[int] = None,
+    extended: bool = False,
+) -> Dict[str, Any]:
+    """Mean return times to the region (``s``, ``v_par``, ``w``) against Kac's
+    ``1/μ(A)``: ``probability``, ``expected``, ``mean_return``, ``ratio`` (with
+    SEMs), ``never_returned``, and per orbit ``index``, ``visits``,
+    ``orbit_mean_return``, ``orbit_ratio``."""
+
+def invariant_states(
+    table: TableLike, alpha: float, n: int, *, seed: int = 0, first_index: int = 0, extended: bool = False
+) -> npt.NDArray[np.float64]:
+    """``(n, 5)`` starts ``(x, y, vx, vy, u)`` drawn from the invariant measure of
+    the collision map (energy ½), start ``i`` from stream ``i`` of ``seed``."""
+
+def bouncing_ball(
+    table: TableLike, alpha: float, states: npt.ArrayLike, *, extended: bool = False
+) -> npt.NDArray[np.bool_]:
+    """Whether each state stays between the stadium's flat walls for ever (the
+    rotation ``4·arctan √α`` per pair of flat collisions); stadium only."""
+
+def pair_rotation(alpha: float) -> float:
+    """``4·arctan √α``: the rotation of ``(v_x, √α u)`` per pair of flat collisions."""

@@ -1,0 +1,186 @@
+//! What the phase-space commands (`section`, `ftle-map`, `kac`) share: one
+//! table at one α, a seed and threads, and outputs (JSON document, CSV,
+//! NPY) checked before the run.
+
+use std::path::PathBuf;
+
+use clap::Args;
+use serde::Serialize;
+use spinball_analysis::run::{TableRecord, Threads};
+use spinball_core::{SpinLaw, SpinLawError};
+use spinball_geometry::Built;
+
+use crate::documents::write_json;
+use crate::error::CliError;
+use crate::files::{check_creatable, check_writable};
+use crate::output::{write_npy, write_text};
+use crate::run_args::parse_threads;
+use crate::table_arg::read_table;
+
+/// One table at one α.
+#[derive(Debug, Clone, Args)]
+pub struct PhaseArgs {
+    /// The table: a built-in spec (`stadium:a=1`, `sinai:L=2,R=1`, `circle`,
+    /// `rectangle:L=1,H=1`) or a table file (`.toml` or `.json`).
+    #[arg(long)]
+    pub table: String,
+    /// Spin parameter α = I/(m r²), in [0, 1] unless --extended.
+    #[arg(long, allow_negative_numbers = true)]
+    pub alpha: f64,
+    /// Allow α > 1 (the mathematical extension of the law).
+    #[arg(long)]
+    pub extended: bool,
+    /// Seed (of the starts, or of the tangent directions of a map).
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Worker threads, 1..=1024 (default: all cores); results do not
+    /// depend on it.
+    #[arg(long, value_name = "T", value_parser = parse_threads)]
+    pub threads: Option<usize>,
+}
+
+impl PhaseArgs {
+    /// The table, the spin law and the threads.
+    ///
+    /// # Errors
+    /// [`CliError::Usage`] for a table or α that cannot work.
+    pub fn setup(&self) -> Result<(Built, SpinLaw, Threads), CliError> {
+        let table = read_table(&self.table)?;
+        let law = if self.extended {
+            SpinLaw::extended(self.alpha)
+        } else {
+            SpinLaw::new(self.alpha)
+        }
+        .map_err(|e| match e {
+            SpinLawError::Unphysical(_) => CliError::Usage(format!(
+                "--alpha {}: outside [0, 1]; pass --extended to allow it",
+                self.alpha
+            )),
+            e => CliError::Usage(format!("--alpha {}: {e}", self.alpha)),
+        })?;
+        let threads = self.threads.map_or(Threads::All, Threads::Fixed);
+        Ok((table, law, threads))
+    }
+}
+
+/// Where a phase-space result goes.
+#[derive(Debug, Clone, Args)]
+pub struct PhaseOutput {
+    /// Write the result as a JSON document (`kind`, `version`, the table as
+    /// data, every parameter and every value). Replaced atomically, so it
+    /// must be a regular file, a link to one, or a new path.
+    #[arg(long)]
+    pub json: Option<PathBuf>,
+    /// Write the values as CSV (columns in the command's help).
+    #[arg(long)]
+    pub csv: Option<PathBuf>,
+    /// Write the values as a float64 NPY array (shape in the command's
+    /// help), for `numpy.load`.
+    #[arg(long)]
+    pub npy: Option<PathBuf>,
+    /// Print nothing on stdout.
+    #[arg(long, short)]
+    pub quiet: bool,
+}
+
+impl PhaseOutput {
+    /// Check, before the run, that every output can be written.
+    ///
+    /// # Errors
+    /// [`CliError::Usage`] naming the flag and what is wrong.
+    pub fn check(&self) -> Result<(), CliError> {
+        if let Some(path) = &self.json {
+            check_writable("json", path)?;
+        }
+        for (flag, path) in [("csv", &self.csv), ("npy", &self.npy)] {
+            if let Some(path) = path {
+                check_creatable(flag, path)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// Write the outputs asked for: `doc` to `--json`, `csv()` to `--csv`,
+    /// `npy()` (shape, row-major values) to `--npy`; each is made only if
+    /// asked for.
+    ///
+    /// # Errors
+    /// [`CliError::Failed`] for a file that cannot be written.
+    pub fn write<T: Serialize>(
+        &self,
+        doc: &T,
+        csv: impl FnOnce() -> String,
+        npy: impl FnOnce() -> (Vec<u64>, Vec<f64>),
+    ) -> Result<(), CliError> {
+        if let Some(path) = &self.json {
+            write_json(path, doc)?;
+        }
+        if let Some(path) = &self.csv {
+            write_text(path, &csv())?;
+        }
+        if let Some(path) = &self.npy {
+            let (shape, values) = npy();
+            write_npy(path, &shape, &values)?;
+        }
+        Ok(())
+    }
+
+    /// Whether any file is asked for.
+    pub fn any_file(&self) -> bool {
+        self.json.is_some() || self.csv.is_some() || self.npy.is_some()
+    }
+}
+
+/// The head every phase-space document starts with.
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
+pub struct DocumentHead {
+    /// What the document is (`spinball.section`, `spinball.ftle_map`, …).
+    pub kind: String,
+    /// The version of spinball that wrote it.
+    pub version: String,
+    /// The table, as data.
+    pub table: TableRecord,
+    /// Spin parameter α.
+    pub alpha: f64,
+}
+
+impl DocumentHead {
+    /// The head of a `kind` document of `table` at `law`.
+    pub fn new(kind: &str, table: &Built, law: &SpinLaw) -> Self {
+        DocumentHead {
+            kind: kind.into(),
+            version: env!("CARGO_PKG_VERSION").into(),
+            table: TableRecord::of(table),
+            alpha: law.alpha(),
+        }
+    }
+}
+
+/// Rows of numbers as CSV under `header` (shortest round-trip form; `NaN`
+/// for a missing value).
+pub fn csv_rows<const N: usize>(header: &[&str; N], rows: &[[f64; N]]) -> String {
+    let mut out = header.join(",");
+    out.push('\n');
+    for r in rows {
+        let cells: Vec<String> = r.iter().map(f64::to_string).collect();
+        out.push_str(&cells.join(","));
+        out.push('\n');
+    }
+    out
+}
+
+/// A `LO,HI` pair of numbers with `LO < HI`, for `--flag`.
+///
+/// # Errors
+/// The form that works, for anything else.
+pub fn parse_range(s: &str) -> Result<(f64, f64), String> {
+    let bad = || format!("`{s}` is not a range: expected LO,HI with finite LO < HI, e.g. 0,2");
+    let (lo, hi) = s.split_once(',').ok_or_else(bad)?;
+    let lo: f64 = lo.trim().parse().map_err(|_| bad())?;
+    let hi: f64 = hi.trim().parse().map_err(|_| bad())?;
+    if lo.is_finite() && hi.is_finite() && lo < hi {
+        Ok((lo, hi))
+    } else {
+        Err(bad())
+    }
+}
