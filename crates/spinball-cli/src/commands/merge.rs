@@ -12,9 +12,9 @@ use spinball_analysis::run::MergeError;
 use crate::commands::ftle_map::{FTLE_MAP_PARTIAL_KIND, merge_maps};
 use crate::commands::spectrum::write_spectrum;
 use crate::documents::read_document;
-use crate::phase_args::PhaseOutput;
 use crate::error::CliError;
 use crate::output::OutputArgs;
+use crate::phase_args::PhaseOutput;
 
 /// The arguments of `spinball merge`.
 #[derive(Debug, Clone, Args)]

@@ -9,8 +9,8 @@ use spinball_analysis::orbits::{
 };
 
 use crate::documents::write_json;
-use crate::files::{check_creatable, check_writable};
 use crate::error::CliError;
+use crate::files::{check_creatable, check_writable};
 use crate::output::write_text;
 use crate::stdout::print;
 use crate::table_arg::read_table;
