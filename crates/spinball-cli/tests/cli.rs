@@ -3,23 +3,13 @@
 //! bad input gets exit code 2 with a message, outputs are readable.
 
 mod common;
-use common::{BIN, scratch, spinball};
+use common::{BIN, ok, scratch, spinball};
 
 use std::path::Path;
 use std::process::{Command, Output};
 use std::time::{Duration, Instant};
 
 use serde_json::Value;
-
-fn ok(args: &[&str]) -> Output {
-    let out = spinball(args);
-    assert!(
-        out.status.success(),
-        "spinball {args:?} failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    out
-}
 
 fn read(path: &Path) -> Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()

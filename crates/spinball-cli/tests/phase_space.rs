@@ -3,22 +3,12 @@
 //! bitwise, and bad input is exit code 2 before any computing.
 
 mod common;
-use common::{scratch, spinball};
+use common::{ok, scratch, spinball};
 
 use std::path::Path;
 use std::process::Output;
 
 use serde_json::Value;
-
-fn ok(args: &[&str]) -> Output {
-    let out = spinball(args);
-    assert!(
-        out.status.success(),
-        "spinball {args:?} failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    out
-}
 
 /// Exit code 2 with `words` in the message.
 fn usage(args: &[&str], words: &str) {

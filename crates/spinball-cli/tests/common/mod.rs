@@ -29,3 +29,14 @@ pub fn spinball(args: &[&str]) -> Output {
         .output()
         .expect("the binary runs")
 }
+
+/// Run and check that it succeeded (stderr in the message if not).
+pub fn ok(args: &[&str]) -> Output {
+    let out = spinball(args);
+    assert!(
+        out.status.success(),
+        "spinball {args:?} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    out
+}
