@@ -9,13 +9,20 @@
 #![cfg(feature = "serde")]
 
 use spinball_analysis::estimators::{Method, SpectrumOptions};
+use spinball_analysis::orbits::{SearchOptions, stability_diagram};
+use spinball_analysis::phase_space::{
+    FtleMapOptions, SectionBox, Slice, ftle_map, ftle_map_part, kac_comparison,
+};
+use spinball_analysis::precision::{EnsembleLevels, Multilevel};
 use spinball_analysis::report::{
-    Document, DocumentError, LyapunovDocument, PartialDocument, SCHEMA, SpectrumDocument,
-    SpectrumRow, SweepDocument, csv_text, read_csv,
+    Document, DocumentError, FtleMapDocument, FtleMapPartialDocument, KacDocument,
+    LyapunovDocument, MultilevelDocument, MultilevelPoint, OrbitsDocument, PartialDocument,
+    PhaseHead, SCHEMA, SectionDocument, SpectrumDocument, SpectrumRow, SweepDocument, csv_text,
+    read_csv,
 };
 use spinball_analysis::run::{Ensemble, Shard, Silent, TableRecord, Threads, spectrum_ensemble};
 use spinball_core::{Billiard, Sampler, SpinLaw};
-use spinball_geometry::{Stadium, Table};
+use spinball_geometry::{Built, Stadium, Table};
 
 const OLD_RESULT: &str = include_str!("data/0.1.0/result.json");
 const OLD_PARTIAL: &str = include_str!("data/0.1.0/partial.json");
@@ -91,6 +98,76 @@ fn every_kind_reads_back_as_written() {
     assert_eq!(read_csv::<SpectrumRow>(&csv).unwrap(), spectrum.rows());
     let spectrum = Document::Spectrum(spectrum);
     assert_eq!(round_trip(&spectrum), spectrum);
+}
+
+/// The kinds of the other commands (multilevel runs, stability diagrams,
+/// sections, Kac return times, FTLE maps and their shards) read back as
+/// written too, `null` exponents off the shell and all.
+#[test]
+fn every_command_kind_reads_back_as_written() {
+    let law = SpinLaw::new(0.5).unwrap();
+    let stadium = Stadium::new(1.0).unwrap();
+
+    let levels = EnsembleLevels::new(
+        Ensemble::new(stadium, law)
+            .with_method(Method::Tangent)
+            .with_seed(5),
+        vec![200, 400, 800],
+    )
+    .unwrap();
+    let estimate = Multilevel::new(0.05)
+        .with_pilot_ics(32)
+        .run(&levels)
+        .unwrap();
+    let multilevel = Document::Multilevel(MultilevelDocument::new(vec![MultilevelPoint {
+        alpha: 0.5,
+        estimate,
+    }]));
+    assert_eq!(round_trip(&multilevel), multilevel);
+
+    let diagram =
+        stability_diagram(&stadium, 2, &[0.0, 0.5], 1e-3, &SearchOptions::default()).unwrap();
+    assert!(!diagram.branches.is_empty());
+    let orbits = Document::Orbits(OrbitsDocument {
+        table: "stadium:a=1".into(),
+        diagram,
+    });
+    assert_eq!(round_trip(&orbits), orbits);
+
+    let section = Document::Section(SectionDocument {
+        head: PhaseHead::new(&stadium, &law),
+        sampler: "invariant".into(),
+        seed: 3,
+        orbits: 1,
+        collisions: 2,
+        spin_slice: Some(0.2),
+        columns: [("s", vec![0.25, 1.5]), ("u", vec![-0.1, 0.3])]
+            .into_iter()
+            .map(|(name, values)| (name.to_string(), values))
+            .collect(),
+    });
+    assert_eq!(round_trip(&section), section);
+
+    let cap = SectionBox::new(2.0..5.0, -1.0..1.0);
+    let billiard = Billiard::new(stadium, law);
+    let comparison = kac_comparison(&billiard, &cap, 4, 500, 3, Threads::Fixed(1)).unwrap();
+    let kac = Document::Kac(KacDocument::new(&stadium, &law, 3, 500, comparison));
+    assert_eq!(round_trip(&kac), kac);
+
+    // Q = 0.9 at α = 0.5 leaves part of the grid off the shell.
+    let options = FtleMapOptions::new(6, 5, Slice::Q(0.9)).with_collisions(100);
+    let part = ftle_map_part(stadium, law, &options, Shard::new(0, 2).unwrap()).unwrap();
+    let partial = Document::FtleMapPartial(FtleMapPartialDocument { part });
+    assert_eq!(round_trip(&partial), partial);
+    let map = ftle_map(stadium, law, &options).unwrap();
+    assert!(map.exponents.iter().any(Option::is_none));
+    let built = Built::Table(Table::from(stadium));
+    let whole = FtleMapDocument::new(&built, &law, TableRecord::of(&stadium), map);
+    assert!(whole.predicted.is_some());
+    let whole = Document::FtleMap(whole);
+    assert_eq!(round_trip(&whole), whole);
+    let back = round_trip(&whole).into_ftle_map_partial().unwrap_err();
+    assert!(back.to_string().contains("spinball.ftle_map"), "{back}");
 }
 
 #[test]

@@ -9,12 +9,12 @@
 use std::path::Path;
 
 use clap::{Args, ValueEnum};
-use serde::Serialize;
-use spinball_analysis::precision::{EnsembleLevels, Multilevel, MultilevelEstimate};
+use spinball_analysis::precision::{EnsembleLevels, Multilevel};
+use spinball_analysis::report::{Document, MultilevelDocument, MultilevelPoint};
 use spinball_analysis::run::Ensemble;
 use spinball_geometry::Boundary;
 
-use crate::documents::write_json;
+use crate::documents::write_document;
 use crate::error::CliError;
 
 /// Which estimator runs.
@@ -67,22 +67,6 @@ impl EstimatorArgs {
     }
 }
 
-/// One α of a multilevel run, as the JSON document lists it.
-#[derive(Debug, Serialize)]
-pub struct MultilevelPoint {
-    /// α.
-    pub alpha: f64,
-    /// The estimate.
-    pub estimate: MultilevelEstimate,
-}
-
-/// The JSON document of a multilevel run.
-#[derive(Debug, Serialize)]
-struct MultilevelDocument<'a> {
-    estimator: &'static str,
-    points: &'a [MultilevelPoint],
-}
-
 /// Run `options` on the levels of `ensemble` up to its collisions.
 ///
 /// # Errors
@@ -104,16 +88,11 @@ pub fn run_multilevel<B: Boundary + Clone + Sync>(
     })
 }
 
-/// Write `points` to `path` as `{"estimator": "multilevel", "points": [...]}`.
+/// Write `points` to `path` as a `spinball.multilevel` document.
 ///
 /// # Errors
 /// [`CliError::Failed`] if it cannot be written.
 pub fn write_multilevel(path: &Path, points: &[MultilevelPoint]) -> Result<(), CliError> {
-    write_json(
-        path,
-        &MultilevelDocument {
-            estimator: "multilevel",
-            points,
-        },
-    )
+    let doc = Document::Multilevel(MultilevelDocument::new(points.to_vec()));
+    write_document(path, &doc, false)
 }

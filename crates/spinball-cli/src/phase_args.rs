@@ -5,12 +5,12 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use serde::Serialize;
-use spinball_analysis::run::{TableRecord, Threads};
+use spinball_analysis::report::Document;
+use spinball_analysis::run::Threads;
 use spinball_core::{SpinLaw, SpinLawError};
 use spinball_geometry::Built;
 
-use crate::documents::write_json;
+use crate::documents::write_document;
 use crate::error::CliError;
 use crate::files::{check_creatable, check_writable};
 use crate::output::{write_npy, write_text};
@@ -100,20 +100,20 @@ impl PhaseOutput {
         Ok(())
     }
 
-    /// Write the outputs asked for: `doc` to `--json`, `csv()` to `--csv`,
+    /// Write the outputs asked for: `doc()` to `--json`, `csv()` to `--csv`,
     /// `npy()` (shape, row-major values) to `--npy`; each is made only if
     /// asked for.
     ///
     /// # Errors
     /// [`CliError::Failed`] for a file that cannot be written.
-    pub fn write<T: Serialize>(
+    pub fn write(
         &self,
-        doc: &T,
+        doc: impl FnOnce() -> Document,
         csv: impl FnOnce() -> String,
         npy: impl FnOnce() -> (Vec<u64>, Vec<f64>),
     ) -> Result<(), CliError> {
         if let Some(path) = &self.json {
-            write_json(path, doc)?;
+            write_document(path, &doc(), false)?;
         }
         if let Some(path) = &self.csv {
             write_text(path, &csv())?;
@@ -128,31 +128,6 @@ impl PhaseOutput {
     /// Whether any file is asked for.
     pub fn any_file(&self) -> bool {
         self.json.is_some() || self.csv.is_some() || self.npy.is_some()
-    }
-}
-
-/// The head every phase-space document starts with.
-#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
-pub struct DocumentHead {
-    /// What the document is (`spinball.section`, `spinball.ftle_map`, …).
-    pub kind: String,
-    /// The version of spinball that wrote it.
-    pub version: String,
-    /// The table, as data.
-    pub table: TableRecord,
-    /// Spin parameter α.
-    pub alpha: f64,
-}
-
-impl DocumentHead {
-    /// The head of a `kind` document of `table` at `law`.
-    pub fn new(kind: &str, table: &Built, law: &SpinLaw) -> Self {
-        DocumentHead {
-            kind: kind.into(),
-            version: env!("CARGO_PKG_VERSION").into(),
-            table: TableRecord::of(table),
-            alpha: law.alpha(),
-        }
     }
 }
 

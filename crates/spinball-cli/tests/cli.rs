@@ -6,7 +6,7 @@ mod common;
 use common::{BIN, ok, scratch, spinball};
 
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Command;
 use std::time::{Duration, Instant};
 
 use serde_json::Value;

@@ -6,7 +6,6 @@ mod common;
 use common::{ok, scratch, spinball};
 
 use std::path::Path;
-use std::process::Output;
 
 use serde_json::Value;
 

@@ -1,5 +1,6 @@
 //! One versioned JSON document for every result a front writes: finished
-//! and partial Lyapunov runs, spectra, sweeps. Each file says what it is
+//! and partial Lyapunov runs, spectra, sweeps, multilevel runs, stability
+//! diagrams, sections, Kac return times and FTLE maps. Each file says what it is
 //! (`kind`) and which layout it follows (`schema`), so a reader refuses a
 //! file it cannot read with a message naming both versions instead of a
 //! field error deep inside.
@@ -10,7 +11,10 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use super::lyapunov::LyapunovDocument;
+use super::multilevel::MultilevelDocument;
+use super::orbits::OrbitsDocument;
 use super::partial::PartialDocument;
+use super::phase_space::{FtleMapDocument, FtleMapPartialDocument, KacDocument, SectionDocument};
 use super::spectrum::SpectrumDocument;
 use super::sweep::SweepDocument;
 
@@ -52,6 +56,25 @@ pub enum Document {
     /// λ(α) on one table with each point's error budget (`spinball sweep`).
     #[serde(rename = "spinball.sweep")]
     Sweep(SweepDocument),
+    /// λ by the multilevel estimator, one point per α (`spinball
+    /// lyapunov` or `sweep` with `--estimator multilevel`).
+    #[serde(rename = "spinball.multilevel")]
+    Multilevel(MultilevelDocument),
+    /// The stability diagram of periodic orbits (`spinball orbits`).
+    #[serde(rename = "spinball.orbits")]
+    Orbits(OrbitsDocument),
+    /// A Birkhoff section (`spinball section`).
+    #[serde(rename = "spinball.section")]
+    Section(SectionDocument),
+    /// Return times against Kac's lemma (`spinball kac`).
+    #[serde(rename = "spinball.kac")]
+    Kac(KacDocument),
+    /// A finished FTLE map (`spinball ftle-map`, `merge`).
+    #[serde(rename = "spinball.ftle_map")]
+    FtleMap(FtleMapDocument),
+    /// One shard of an FTLE map.
+    #[serde(rename = "spinball.ftle_map.partial")]
+    FtleMapPartial(FtleMapPartialDocument),
 }
 
 /// Why a document could not be read or written.
@@ -125,6 +148,12 @@ impl Document {
             Document::Spectrum(_) => "spinball.spectrum",
             Document::SpectrumPartial(_) => "spinball.spectrum.partial",
             Document::Sweep(_) => "spinball.sweep",
+            Document::Multilevel(_) => "spinball.multilevel",
+            Document::Orbits(_) => "spinball.orbits",
+            Document::Section(_) => "spinball.section",
+            Document::Kac(_) => "spinball.kac",
+            Document::FtleMap(_) => "spinball.ftle_map",
+            Document::FtleMapPartial(_) => "spinball.ftle_map.partial",
         }
     }
 
@@ -210,6 +239,17 @@ impl Document {
         match self {
             Document::Sweep(d) => Ok(d),
             other => Err(other.not("spinball.sweep")),
+        }
+    }
+
+    /// The shard of an FTLE map this document is.
+    ///
+    /// # Errors
+    /// [`DocumentError::Kind`] for any other kind.
+    pub fn into_ftle_map_partial(self) -> Result<FtleMapPartialDocument, DocumentError> {
+        match self {
+            Document::FtleMapPartial(d) => Ok(d),
+            other => Err(other.not("spinball.ftle_map.partial")),
         }
     }
 

@@ -48,6 +48,12 @@
 //! | `spinball.spectrum` | [`SpectrumDocument`] | `spectrum`, `merge` |
 //! | `spinball.spectrum.partial` | [`SpectrumDocument`] | a spectrum shard |
 //! | `spinball.sweep` | [`SweepDocument`] | `sweep` |
+//! | `spinball.multilevel` | [`MultilevelDocument`] | `lyapunov`, `sweep` with `--estimator multilevel` |
+//! | `spinball.orbits` | [`OrbitsDocument`] | `orbits` |
+//! | `spinball.section` | [`SectionDocument`] | `section` |
+//! | `spinball.kac` | [`KacDocument`] | `kac` |
+//! | `spinball.ftle_map` | [`FtleMapDocument`] | `ftle-map`, `merge` |
+//! | `spinball.ftle_map.partial` | [`FtleMapPartialDocument`] | an FTLE map shard |
 //!
 //! [`Document::from_json`] reads the header first: a file of another
 //! schema is refused with [`DocumentError::Version`], naming the schema
@@ -68,8 +74,14 @@
 #[cfg(feature = "serde")]
 mod document;
 mod lyapunov;
+#[cfg(feature = "serde")]
+mod multilevel;
 mod names;
+#[cfg(feature = "serde")]
+mod orbits;
 mod partial;
+#[cfg(feature = "serde")]
+mod phase_space;
 mod rows;
 mod spectrum;
 mod sweep;
@@ -80,8 +92,16 @@ mod trajectories;
 #[cfg(feature = "serde")]
 pub use document::{Document, DocumentError, SCHEMA, SCHEMA_0_1};
 pub use lyapunov::LyapunovDocument;
+#[cfg(feature = "serde")]
+pub use multilevel::{MultilevelDocument, MultilevelPoint};
 pub use names::{IcSource, MethodName};
+#[cfg(feature = "serde")]
+pub use orbits::OrbitsDocument;
 pub use partial::PartialDocument;
+#[cfg(feature = "serde")]
+pub use phase_space::{
+    FtleMapDocument, FtleMapPartialDocument, KacDocument, PhaseHead, SectionDocument,
+};
 pub use rows::{BudgetRow, SweepRow, sweep_rows};
 pub use spectrum::{SpectrumDocument, SpectrumRow};
 pub use sweep::{SweepDocument, SweepPoint};

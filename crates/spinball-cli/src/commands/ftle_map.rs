@@ -6,25 +6,17 @@
 use std::path::Path;
 
 use clap::Args;
-use serde::{Deserialize, Serialize};
 use spinball_analysis::AnalysisError;
-use spinball_analysis::estimators::{CHAOS_THRESHOLD, ChaoticFraction};
-use spinball_analysis::phase_space::{
-    FacingFlats, FtleMap, FtleMapOptions, FtleMapPart, Slice, ftle_map_part,
-};
-use spinball_analysis::run::{Shard, TableRecord};
+use spinball_analysis::estimators::CHAOS_THRESHOLD;
+use spinball_analysis::phase_space::{FtleMapOptions, FtleMapPart, Slice, ftle_map_part};
+use spinball_analysis::report::{Document, FtleMapDocument, FtleMapPartialDocument};
+use spinball_analysis::run::Shard;
 use spinball_core::SpinLaw;
-use spinball_geometry::Built;
 
-use crate::documents::write_json;
+use crate::documents::{read_document, write_document};
 use crate::error::CliError;
 use crate::phase_args::{PhaseArgs, PhaseOutput};
 use crate::stdout::print;
-
-/// The `kind` of a finished FTLE map.
-pub const FTLE_MAP_KIND: &str = "spinball.ftle_map";
-/// The `kind` of one shard of an FTLE map.
-pub const FTLE_MAP_PARTIAL_KIND: &str = "spinball.ftle_map.partial";
 
 /// The arguments of `spinball ftle-map`.
 #[derive(Debug, Clone, Args)]
@@ -68,136 +60,72 @@ pub struct FtleMapArgs {
     pub out: PhaseOutput,
 }
 
-/// A finished map with what it shows.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct FtleMapDocument {
-    /// [`FTLE_MAP_KIND`].
-    pub kind: String,
-    /// The version of spinball that wrote it.
-    pub version: String,
-    /// The table.
-    pub table: TableRecord,
-    /// The map: options, α, perimeter, exponents (row-major, `null` off
-    /// the shell).
-    pub map: FtleMap,
-    /// The chaotic share of the cells on the shell, with its binomial error.
-    pub chaotic_fraction: ChaoticFraction,
-    /// The cells the bouncing-ball rotation predicts trapped between two
-    /// facing flats (row-major); `null` for a table without them.
-    pub predicted: Option<Vec<bool>>,
-    /// Predicted cells on the shell, and how many of them the map finds
-    /// regular.
-    pub predicted_cells: usize,
-    /// See `predicted_cells`.
-    pub predicted_regular: usize,
-}
-
-/// One shard's map.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct FtleMapPartialDocument {
-    /// [`FTLE_MAP_PARTIAL_KIND`].
-    pub kind: String,
-    /// The shard.
-    pub part: FtleMapPart,
-}
-
-impl FtleMapDocument {
-    /// The document of `map` of `table` under `law`.
-    fn new(table: &Built, law: &SpinLaw, record: TableRecord, map: FtleMap) -> Self {
-        let flats = match table {
-            Built::Table(t) => FacingFlats::of_table(t),
-            Built::Segments(_) => None,
-        };
-        let predicted = flats.map(|f| f.trapped_cells(law, &map));
-        let (predicted_cells, predicted_regular) = predicted
-            .as_ref()
-            .map_or((0, 0), |mask| map.regular_among(mask));
-        FtleMapDocument {
-            kind: FTLE_MAP_KIND.into(),
-            version: env!("CARGO_PKG_VERSION").into(),
-            table: record,
-            chaotic_fraction: map.chaotic_fraction(),
-            map,
-            predicted,
-            predicted_cells,
-            predicted_regular,
-        }
-    }
-
-    /// Write the outputs asked for and print a summary unless quiet.
-    ///
-    /// # Errors
-    /// [`CliError::Failed`] for an output that cannot be written.
-    pub fn write_results(&self, out: &PhaseOutput) -> Result<(), CliError> {
-        let map = &self.map;
-        out.write(
-            self,
-            || map.to_csv(),
-            || {
-                let shape = vec![map.options.rows as u64, map.options.columns as u64];
-                (shape, map.to_array())
-            },
-        )?;
-        if out.quiet {
-            return Ok(());
-        }
-        let (regular, on_shell) = map.counts();
-        let f = &self.chaotic_fraction;
-        let mut line = format!(
-            "{} × {} map at α = {}, {:?}: {regular} of {on_shell} cells regular (FTLE ≤ {}); chaotic fraction {}",
-            map.options.columns,
-            map.options.rows,
-            map.alpha,
-            map.options.slice,
-            map.options.threshold,
-            spinball_analysis::estimators::PlusMinus::new(f.fraction, f.sem),
-        );
-        if self.predicted.is_some() {
-            line.push_str(&format!(
-                "; bouncing-ball cells predicted {}, of which regular {}",
-                self.predicted_cells, self.predicted_regular
-            ));
-        }
-        line.push('\n');
-        print(&line)
-    }
-}
-
-/// Read a shard's map.
+/// Write the outputs of the finished map `doc` asked for and print a
+/// summary unless quiet.
 ///
 /// # Errors
-/// [`CliError::Usage`] for a file that is not one.
-pub fn read_partial(path: &Path) -> Result<FtleMapPart, CliError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::Usage(format!("cannot read {}: {e}", path.display())))?;
-    let doc: FtleMapPartialDocument = serde_json::from_str(&text).map_err(|e| {
-        CliError::Usage(format!(
-            "{} is not a valid spinball FTLE map shard: {e}",
-            path.display()
-        ))
-    })?;
-    if doc.kind != FTLE_MAP_PARTIAL_KIND {
-        return Err(CliError::Usage(format!(
-            "{} is a `{}`, not an FTLE map shard (`{FTLE_MAP_PARTIAL_KIND}`)",
-            path.display(),
-            doc.kind
-        )));
+/// [`CliError::Failed`] for an output that cannot be written.
+fn write_results(doc: &FtleMapDocument, out: &PhaseOutput) -> Result<(), CliError> {
+    let map = &doc.map;
+    out.write(
+        || Document::FtleMap(doc.clone()),
+        || map.to_csv(),
+        || {
+            let shape = vec![map.options.rows as u64, map.options.columns as u64];
+            (shape, map.to_array())
+        },
+    )?;
+    if out.quiet {
+        return Ok(());
     }
-    Ok(doc.part)
+    let (regular, on_shell) = map.counts();
+    let f = &doc.chaotic_fraction;
+    let mut line = format!(
+        "{} × {} map at α = {}, {:?}: {regular} of {on_shell} cells regular (FTLE ≤ {}); chaotic fraction {}",
+        map.options.columns,
+        map.options.rows,
+        map.alpha,
+        map.options.slice,
+        map.options.threshold,
+        spinball_analysis::estimators::PlusMinus::new(f.fraction, f.sem),
+    );
+    if doc.predicted.is_some() {
+        line.push_str(&format!(
+            "; bouncing-ball cells predicted {}, of which regular {}",
+            doc.predicted_cells, doc.predicted_regular
+        ));
+    }
+    line.push('\n');
+    print(&line)
 }
 
-/// `spinball merge` of FTLE map shards: the whole map, bitwise that of one
-/// run.
+/// Read the FTLE map shard in `path`.
+///
+/// # Errors
+/// [`CliError::Usage`] for a file that is not one (naming its kind).
+fn read_partial(path: &Path) -> Result<FtleMapPart, CliError> {
+    read_document(path)?
+        .into_ftle_map_partial()
+        .map(|doc| doc.part)
+        .map_err(|e| CliError::Usage(format!("{} is {e}", path.display())))
+}
+
+/// `spinball merge` of FTLE map shards: `first` (read from the first
+/// file) and those in `rest`, into the whole map, bitwise that of one run.
 ///
 /// # Errors
 /// [`CliError::Usage`] for files that are not shards of one map, or that
 /// overlap or leave cells out.
-pub fn merge_maps(paths: &[std::path::PathBuf], out: &PhaseOutput) -> Result<(), CliError> {
+pub fn merge_maps(
+    first: FtleMapPart,
+    rest: &[std::path::PathBuf],
+    out: &PhaseOutput,
+) -> Result<(), CliError> {
     out.check()?;
-    let parts = paths
-        .iter()
-        .map(|p| read_partial(p))
-        .collect::<Result<Vec<_>, _>>()?;
+    let mut parts = vec![first];
+    for path in rest {
+        parts.push(read_partial(path)?);
+    }
     let record = parts[0].table.clone();
     let table = record
         .shape
@@ -208,7 +136,7 @@ pub fn merge_maps(paths: &[std::path::PathBuf], out: &PhaseOutput) -> Result<(),
     let alpha = parts[0].map.alpha;
     let law = SpinLaw::extended(alpha).map_err(CliError::usage)?;
     let map = FtleMapPart::merge(parts).map_err(CliError::usage)?;
-    FtleMapDocument::new(&table, &law, record, map).write_results(out)
+    write_results(&FtleMapDocument::new(&table, &law, record, map), out)
 }
 
 /// `spinball ftle-map`.
@@ -243,11 +171,8 @@ pub fn ftle_map(args: &FtleMapArgs) -> Result<(), CliError> {
         let path = args.out.json.as_ref().expect("checked above");
         let starts = part.starts.clone();
         let on_shell = part.on_shell;
-        let doc = FtleMapPartialDocument {
-            kind: FTLE_MAP_PARTIAL_KIND.into(),
-            part,
-        };
-        write_json(path, &doc)?;
+        let doc = Document::FtleMapPartial(FtleMapPartialDocument { part });
+        write_document(path, &doc, false)?;
         if args.out.quiet {
             return Ok(());
         }
@@ -257,5 +182,8 @@ pub fn ftle_map(args: &FtleMapArgs) -> Result<(), CliError> {
         ));
     }
     let record = part.table.clone();
-    FtleMapDocument::new(&table, &law, record, part.map).write_results(&args.out)
+    write_results(
+        &FtleMapDocument::new(&table, &law, record, part.map),
+        &args.out,
+    )
 }

@@ -2,18 +2,15 @@
 //! orbit from the invariant measure, against Kac's lemma `1/μ(A)`.
 
 use clap::Args;
-use serde::Serialize;
 use spinball_analysis::AnalysisError;
 use spinball_analysis::estimators::PlusMinus;
-use spinball_analysis::phase_space::{KacComparison, SectionBox, kac_comparison};
+use spinball_analysis::phase_space::{SectionBox, kac_comparison};
+use spinball_analysis::report::{Document, KacDocument};
 use spinball_core::Billiard;
 
 use crate::error::CliError;
-use crate::phase_args::{DocumentHead, PhaseArgs, PhaseOutput, parse_range};
+use crate::phase_args::{PhaseArgs, PhaseOutput, parse_range};
 use crate::stdout::print;
-
-/// The `kind` of a Kac document.
-pub const KAC_KIND: &str = "spinball.kac";
 
 /// The arguments of `spinball kac`.
 #[derive(Debug, Clone, Args)]
@@ -43,19 +40,6 @@ pub struct KacArgs {
     pub collisions: u64,
     #[command(flatten)]
     pub out: PhaseOutput,
-}
-
-/// The JSON of `spinball kac`.
-#[derive(Debug, Serialize)]
-struct KacDocument<'a> {
-    #[serde(flatten)]
-    head: DocumentHead,
-    seed: u64,
-    collisions: u64,
-    /// `mean_return / expected` with its SEM (`null` if fewer than two
-    /// orbits returned).
-    ratio: Option<spinball_analysis::precision::Measurement>,
-    comparison: &'a KacComparison,
 }
 
 /// `spinball kac`.
@@ -93,12 +77,14 @@ pub fn kac(args: &KacArgs) -> Result<(), CliError> {
             [o.index as f64, o.visits as f64, m, m / kac.expected]
         })
         .collect();
-    let doc = KacDocument {
-        head: DocumentHead::new(KAC_KIND, billiard.table(), &law),
-        seed: p.seed,
-        collisions: args.collisions,
-        ratio: kac.ratio(),
-        comparison: &kac,
+    let doc = || {
+        Document::Kac(KacDocument::new(
+            billiard.table(),
+            &law,
+            p.seed,
+            args.collisions,
+            kac.clone(),
+        ))
     };
     let csv = || {
         let mut out = String::from("index,collisions,visits,mean_return,ratio\n");
@@ -119,7 +105,7 @@ pub fn kac(args: &KacArgs) -> Result<(), CliError> {
             rows.iter().flatten().copied().collect(),
         )
     };
-    args.out.write(&doc, csv, npy)?;
+    args.out.write(doc, csv, npy)?;
     if args.out.quiet {
         return Ok(());
     }

@@ -9,7 +9,7 @@ use clap::Args;
 use spinball_analysis::report::{Document, PartialDocument, SpectrumDocument};
 use spinball_analysis::run::MergeError;
 
-use crate::commands::ftle_map::{FTLE_MAP_PARTIAL_KIND, merge_maps};
+use crate::commands::ftle_map::merge_maps;
 use crate::commands::spectrum::write_spectrum;
 use crate::documents::read_document;
 use crate::error::CliError;
@@ -50,15 +50,6 @@ fn different(first: &Path, path: &Path, e: MergeError) -> CliError {
     }
 }
 
-/// Whether `path` holds the shard of an FTLE map (a document of the
-/// command line's own kind, not of the library's result schema).
-fn is_ftle_map_part(path: &Path) -> bool {
-    std::fs::read_to_string(path)
-        .ok()
-        .and_then(|text| serde_json::from_str::<serde_json::Value>(&text).ok())
-        .is_some_and(|v| v["kind"] == FTLE_MAP_PARTIAL_KIND)
-}
-
 /// `spinball merge`.
 ///
 /// # Errors
@@ -67,15 +58,6 @@ fn is_ftle_map_part(path: &Path) -> bool {
 pub fn merge(args: &MergeArgs) -> Result<(), CliError> {
     args.out.check()?;
     let first_path = &args.parts[0];
-    if is_ftle_map_part(first_path) {
-        let out = PhaseOutput {
-            json: args.out.json.clone(),
-            csv: args.out.csv.clone(),
-            npy: args.out.npy.clone(),
-            quiet: args.out.quiet,
-        };
-        return merge_maps(&args.parts, &out);
-    }
     match read_document(first_path)? {
         Document::LyapunovPartial(first) => {
             let mut docs = vec![first];
@@ -116,6 +98,15 @@ pub fn merge(args: &MergeArgs) -> Result<(), CliError> {
             }
             let merged = SpectrumDocument::merge(&docs).map_err(CliError::usage)?;
             write_spectrum(&merged, &args.out)
+        }
+        Document::FtleMapPartial(first) => {
+            let out = PhaseOutput {
+                json: args.out.json.clone(),
+                csv: args.out.csv.clone(),
+                npy: args.out.npy.clone(),
+                quiet: args.out.quiet,
+            };
+            merge_maps(first.part, &args.parts[1..], &out)
         }
         other => Err(CliError::Usage(format!(
             "{} is not a partial result (its kind is `{}`); merge the --json files of sharded runs",

@@ -7,8 +7,9 @@ use clap::Args;
 use spinball_analysis::orbits::{
     ORBIT_CSV_HEADER, SearchOptions, StabilityDiagram, stability_diagram,
 };
+use spinball_analysis::report::{Document, OrbitsDocument};
 
-use crate::documents::write_json;
+use crate::documents::write_document;
 use crate::error::CliError;
 use crate::files::{check_creatable, check_writable};
 use crate::output::write_text;
@@ -112,7 +113,11 @@ pub fn orbits(args: &OrbitsArgs) -> Result<(), CliError> {
     let diagram = stability_diagram(&table, args.period, &alphas, args.precision, &search)
         .map_err(CliError::usage)?;
     if let Some(path) = &args.json {
-        write_json(path, &Document::new(&args.table, &diagram))?;
+        let doc = Document::Orbits(OrbitsDocument {
+            table: args.table.clone(),
+            diagram: diagram.clone(),
+        });
+        write_document(path, &doc, false)?;
     }
     if let Some(path) = &args.csv {
         let mut text = String::from(ORBIT_CSV_HEADER);
@@ -127,19 +132,6 @@ pub fn orbits(args: &OrbitsArgs) -> Result<(), CliError> {
         return Ok(());
     }
     print(&summary(&args.table, &diagram))
-}
-
-/// The JSON document: the diagram, with the table it is of.
-#[derive(Debug, serde::Serialize)]
-struct Document<'a> {
-    table: &'a str,
-    diagram: &'a StabilityDiagram,
-}
-
-impl<'a> Document<'a> {
-    fn new(table: &'a str, diagram: &'a StabilityDiagram) -> Self {
-        Document { table, diagram }
-    }
 }
 
 /// One line per orbit (at the first and last α) and per change.

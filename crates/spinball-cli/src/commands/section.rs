@@ -2,23 +2,19 @@
 //! collision as a point `(s, sin θ, v∥, |v|, u, wall, Q)`.
 
 use clap::{Args, ValueEnum};
-use serde::Serialize;
 use spinball_analysis::AnalysisError;
+use spinball_analysis::report::{Document, PhaseHead, SectionDocument};
 use spinball_analysis::phase_space::{
     SECTION_COLUMNS, invariant_starts, sampled_sections, section_rows, sections,
 };
 use spinball_core::{Billiard, Sampler};
 
 use crate::error::CliError;
-use crate::phase_args::{DocumentHead, PhaseArgs, PhaseOutput, csv_rows};
+use crate::phase_args::{PhaseArgs, PhaseOutput, csv_rows};
 use crate::stdout::print;
 
-/// The `kind` of a section document.
-pub const SECTION_KIND: &str = "spinball.section";
-
 /// How the orbits start.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum, Serialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum StartsArg {
     /// The paper's sampler.
     Paper,
@@ -28,6 +24,17 @@ pub enum StartsArg {
     /// (uniform in arc length and in the disk of `(v∥, √α u)`), on the
     /// shell E = ½.
     Invariant,
+}
+
+impl StartsArg {
+    /// The name the section document gives the starts.
+    fn name(self) -> &'static str {
+        match self {
+            StartsArg::Paper => "paper",
+            StartsArg::Microcanonical => "microcanonical",
+            StartsArg::Invariant => "invariant",
+        }
+    }
 }
 
 /// The arguments of `spinball section`.
@@ -63,20 +70,6 @@ fn parse_half_width(s: &str) -> Result<f64, String> {
             "the slice's half-width must be a finite number > 0 (|√α u| ≤ 1 on the shell)".into(),
         ),
     }
-}
-
-/// The JSON of `spinball section`.
-#[derive(Debug, Serialize)]
-struct SectionDocument {
-    #[serde(flatten)]
-    head: DocumentHead,
-    sampler: StartsArg,
-    seed: u64,
-    orbits: u64,
-    collisions: u64,
-    spin_slice: Option<f64>,
-    /// Column name → one value per point.
-    columns: serde_json::Map<String, serde_json::Value>,
 }
 
 /// `spinball section`.
@@ -118,19 +111,21 @@ pub fn section(args: &SectionArgs) -> Result<(), CliError> {
         .enumerate()
         .map(|(k, name)| {
             let values: Vec<f64> = rows.iter().map(|r| r[k]).collect();
-            ((*name).to_string(), serde_json::json!(values))
+            ((*name).to_string(), values)
         })
         .collect();
-    let doc = SectionDocument {
-        head: DocumentHead::new(SECTION_KIND, billiard.table(), &law),
-        sampler: args.sampler,
-        seed: p.seed,
-        orbits: args.orbits,
-        collisions: args.collisions,
-        spin_slice: args.spin_slice,
-        columns,
+    let doc = || {
+        Document::Section(SectionDocument {
+            head: PhaseHead::new(billiard.table(), &law),
+            sampler: args.sampler.name().into(),
+            seed: p.seed,
+            orbits: args.orbits,
+            collisions: args.collisions,
+            spin_slice: args.spin_slice,
+            columns,
+        })
     };
-    args.out.write(&doc, csv, || {
+    args.out.write(doc, csv, || {
         (
             vec![rows.len() as u64, SECTION_COLUMNS.len() as u64],
             rows.iter().flatten().copied().collect(),

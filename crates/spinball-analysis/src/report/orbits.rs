@@ -1,0 +1,17 @@
+//! The document of `spinball orbits`: the stability diagram of the
+//! periodic orbits of one period, with the table it is of.
+//!
+//! Documented in the group docs (`report/mod.rs`), section "Documents".
+
+use serde::{Deserialize, Serialize};
+
+use crate::orbits::StabilityDiagram;
+
+/// A stability diagram (kind `spinball.orbits`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct OrbitsDocument {
+    /// The table, as given on the command line (e.g. `stadium:a=1`).
+    pub table: String,
+    /// The orbits followed in α and where their stability changes.
+    pub diagram: StabilityDiagram,
+}
