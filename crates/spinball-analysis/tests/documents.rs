@@ -112,7 +112,7 @@ fn every_command_kind_reads_back_as_written() {
         Ensemble::new(stadium, law)
             .with_method(Method::Tangent)
             .with_seed(5),
-        vec![200, 400, 800],
+        vec![200, 400, 800, 1600],
     )
     .unwrap();
     let estimate = Multilevel::new(0.05)
