@@ -3,10 +3,10 @@
 
 use clap::{Args, ValueEnum};
 use spinball_analysis::AnalysisError;
-use spinball_analysis::report::{Document, PhaseHead, SectionDocument};
 use spinball_analysis::phase_space::{
     SECTION_COLUMNS, invariant_starts, sampled_sections, section_rows, sections,
 };
+use spinball_analysis::report::{Document, PhaseHead, SectionDocument};
 use spinball_core::{Billiard, Sampler};
 
 use crate::error::CliError;
