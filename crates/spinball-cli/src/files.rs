@@ -106,6 +106,27 @@ pub fn check_writable(flag: &str, path: &Path) -> Result<(), CliError> {
     check_creatable(flag, path)
 }
 
+/// Check, before a run, every output of a command: `--json` (replaced
+/// whole, [`check_writable`]) and the files written into (`--csv`,
+/// `--npy`, ...: [`check_creatable`]), each given with its flag.
+///
+/// # Errors
+/// [`CliError::Usage`] naming the first flag that cannot work and why.
+pub fn check_outputs(
+    json: Option<&Path>,
+    written_into: &[(&str, Option<&Path>)],
+) -> Result<(), CliError> {
+    if let Some(path) = json {
+        check_writable("json", path)?;
+    }
+    for (flag, path) in written_into {
+        if let Some(path) = path {
+            check_creatable(flag, path)?;
+        }
+    }
+    Ok(())
+}
+
 /// Check, before a run, that the output `path` given as `--flag` can be
 /// written into: it exists (a file, or a device such as `/dev/stdout`,
 /// written as a shell redirect would), or its directory exists and takes a

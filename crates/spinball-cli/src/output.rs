@@ -13,7 +13,7 @@ use spinball_analysis::run::LyapunovEstimate;
 
 use crate::documents::write_document;
 use crate::error::CliError;
-use crate::files::{check_creatable, check_writable};
+use crate::files::check_outputs;
 use crate::stdout::print;
 
 /// Output options.
@@ -73,15 +73,10 @@ impl OutputArgs {
     /// # Errors
     /// [`CliError::Usage`] naming the flag and what is wrong.
     pub fn check(&self) -> Result<(), CliError> {
-        if let Some(path) = &self.json {
-            check_writable("json", path)?;
-        }
-        for (flag, path) in [("csv", &self.csv), ("npy", &self.npy)] {
-            if let Some(path) = path {
-                check_creatable(flag, path)?;
-            }
-        }
-        Ok(())
+        check_outputs(
+            self.json.as_deref(),
+            &[("csv", self.csv.as_deref()), ("npy", self.npy.as_deref())],
+        )
     }
 
     /// Write finished estimates to every output asked for, and print a

@@ -12,7 +12,7 @@ use spinball_geometry::Built;
 
 use crate::documents::write_document;
 use crate::error::CliError;
-use crate::files::{check_creatable, check_writable};
+use crate::files::check_outputs;
 use crate::output::{write_npy, write_text};
 use crate::run_args::parse_threads;
 use crate::table_arg::read_table;
@@ -89,15 +89,10 @@ impl PhaseOutput {
     /// # Errors
     /// [`CliError::Usage`] naming the flag and what is wrong.
     pub fn check(&self) -> Result<(), CliError> {
-        if let Some(path) = &self.json {
-            check_writable("json", path)?;
-        }
-        for (flag, path) in [("csv", &self.csv), ("npy", &self.npy)] {
-            if let Some(path) = path {
-                check_creatable(flag, path)?;
-            }
-        }
-        Ok(())
+        check_outputs(
+            self.json.as_deref(),
+            &[("csv", self.csv.as_deref()), ("npy", self.npy.as_deref())],
+        )
     }
 
     /// Write the outputs asked for: `doc()` to `--json`, `csv()` to `--csv`,

@@ -11,7 +11,7 @@ use spinball_analysis::report::{Document, OrbitsDocument};
 
 use crate::documents::write_document;
 use crate::error::CliError;
-use crate::files::{check_creatable, check_writable};
+use crate::files::check_outputs;
 use crate::output::write_text;
 use crate::stdout::print;
 use crate::table_arg::read_table;
@@ -99,12 +99,7 @@ pub fn orbits(args: &OrbitsArgs) -> Result<(), CliError> {
             args.grid.len()
         )));
     };
-    if let Some(path) = &args.json {
-        check_writable("json", path)?;
-    }
-    if let Some(path) = &args.csv {
-        check_creatable("csv", path)?;
-    }
+    check_outputs(args.json.as_deref(), &[("csv", args.csv.as_deref())])?;
     let search = SearchOptions {
         normal_samples: args.normal_samples,
         grid: [ns, nv, nw],
