@@ -96,6 +96,12 @@ pub enum AnalysisError {
         /// The tolerance asked for.
         tolerance: f64,
     },
+    /// An escape sample that cannot be analysed.
+    #[error(transparent)]
+    Escape(#[from] crate::escape::EscapeError),
+    /// A transport (displacement) sample that cannot be analysed.
+    #[error(transparent)]
+    Transport(#[from] crate::transport::TransportError),
 }
 
 impl AnalysisError {

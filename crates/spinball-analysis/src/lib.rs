@@ -94,12 +94,14 @@
 #![forbid(unsafe_code)]
 
 pub mod diagnostics;
+pub mod escape;
 pub mod estimators;
 pub mod orbits;
 pub mod phase_space;
 pub mod precision;
 pub mod report;
 pub mod run;
+pub mod transport;
 
 mod error;
 #[cfg(test)]

@@ -1,0 +1,222 @@
+//! The mean escape time the invariant measure predicts (Kac's lemma): the
+//! reference every measured mean escape time is held against.
+//!
+//! Documented in the group docs (`escape/mod.rs`) and `docs/TRANSPORT.md`,
+//! section "Kac prediction", where the formulas are derived.
+//!
+//! The hole is a piece of wall of arc length `h`; every ball reaching it
+//! leaves, whatever its velocity and spin. The invariant measure of the
+//! spinning billiard map is uniform in arc length for every α (`ds dv∥ dw`,
+//! see [`InvariantMeasure`](crate::phase_space::InvariantMeasure)), so the
+//! hole carries the share `μ(hole) = h/|∂Q|`, and by Kac's lemma a ball
+//! started on the hole from the invariant measure of the closed table comes
+//! back to it after `|∂Q|/h` collisions on average: exactly, if the closed
+//! table is ergodic. In time, the flow's version of the same lemma gives the
+//! mean free time of the invariant measure times that: `π|Q|/|∂Q|` per
+//! collision at α = 0, `4|Q|/|∂Q|` at every α > 0 (the translational speed
+//! averages π/4 there). For balls started anywhere from the invariant
+//! measure the same numbers hold in the small-hole limit.
+
+use std::fmt;
+
+use spinball_core::Sampler;
+
+use super::EscapeError;
+use super::survival::{Clock, MeanEscape};
+use crate::diagnostics::initial_mean_speed;
+
+/// The Kac prediction for one table, hole and α.
+///
+/// ```
+/// use spinball_analysis::escape::KacPrediction;
+/// use std::f64::consts::PI;
+/// // The unit circle with a hole of arc length 0.1, no spin.
+/// let kac = KacPrediction::new(2.0 * PI, PI, 0.1, 0.0)?;
+/// assert!((kac.mean_collisions - 20.0 * PI).abs() < 1e-12);
+/// assert!((kac.mean_time - PI * PI / 0.1).abs() < 1e-9); // π|Q|/h
+/// # Ok::<(), spinball_analysis::escape::EscapeError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[must_use]
+pub struct KacPrediction {
+    /// Perimeter `|∂Q|` of the closed table (hole included).
+    pub perimeter: f64,
+    /// Area `|Q|`.
+    pub area: f64,
+    /// Total arc length `h` of the holes.
+    pub hole: f64,
+    /// Spin parameter α.
+    pub alpha: f64,
+    /// `μ(hole) = h/|∂Q|`, the hole's share of the invariant measure.
+    pub hole_measure: f64,
+    /// Mean escape collisions `|∂Q|/h` (the escaping hit counted).
+    pub mean_collisions: f64,
+    /// Mean free time of the invariant measure: `π|Q|/|∂Q|` at α = 0,
+    /// `4|Q|/|∂Q|` at α > 0.
+    pub mean_free_time: f64,
+    /// Mean escape time `mean_collisions · mean_free_time`: `π|Q|/h` at
+    /// α = 0, `4|Q|/h` at α > 0.
+    pub mean_time: f64,
+}
+
+impl KacPrediction {
+    /// The prediction for a table of `perimeter` and `area` with holes of
+    /// total arc length `hole`, at spin parameter `alpha`.
+    ///
+    /// # Errors
+    /// [`EscapeError::InvalidOption`] unless perimeter and area are positive
+    /// and finite, `0 < hole <= perimeter` and `alpha >= 0` is finite.
+    pub fn new(perimeter: f64, area: f64, hole: f64, alpha: f64) -> Result<Self, EscapeError> {
+        for (name, v) in [("perimeter", perimeter), ("area", area)] {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(EscapeError::invalid(
+                    name,
+                    format!("{v}: must be positive and finite"),
+                ));
+            }
+        }
+        if !(hole > 0.0 && hole <= perimeter) {
+            return Err(EscapeError::invalid(
+                "hole",
+                format!(
+                    "{hole}: the hole's arc length must be in (0, {perimeter}] (the perimeter)"
+                ),
+            ));
+        }
+        if !(alpha.is_finite() && alpha >= 0.0) {
+            return Err(EscapeError::invalid(
+                "alpha",
+                format!("{alpha}: must be finite and >= 0"),
+            ));
+        }
+        let mean_path = std::f64::consts::PI * area / perimeter;
+        let mean_free_time = mean_path / initial_mean_speed(Sampler::Microcanonical, alpha);
+        let mean_collisions = perimeter / hole;
+        Ok(KacPrediction {
+            perimeter,
+            area,
+            hole,
+            alpha,
+            hole_measure: hole / perimeter,
+            mean_collisions,
+            mean_free_time,
+            mean_time: mean_collisions * mean_free_time,
+        })
+    }
+
+    /// The predicted mean on `clock`.
+    #[must_use]
+    pub fn mean(&self, clock: Clock) -> f64 {
+        match clock {
+            Clock::Time => self.mean_time,
+            Clock::Collisions => self.mean_collisions,
+        }
+    }
+
+    /// A measured mean escape time against this prediction.
+    pub fn compare(&self, measured: MeanEscape) -> KacComparison {
+        let predicted = self.mean(measured.clock);
+        KacComparison {
+            predicted,
+            measured,
+            ratio: measured.mean / predicted,
+            ratio_sem: measured.sem / predicted,
+        }
+    }
+}
+
+impl fmt::Display for KacPrediction {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "Kac: hole {} of {} (μ = {:.4e}) at α = {}: {:.4} collisions, time {:.4}",
+            self.hole,
+            self.perimeter,
+            self.hole_measure,
+            self.alpha,
+            self.mean_collisions,
+            self.mean_time
+        )
+    }
+}
+
+/// A measured mean escape time over its Kac prediction.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[must_use]
+pub struct KacComparison {
+    /// The prediction on the measurement's clock.
+    pub predicted: f64,
+    /// The measurement.
+    pub measured: MeanEscape,
+    /// Measured over predicted.
+    pub ratio: f64,
+    /// Standard error of the ratio (the prediction is exact).
+    pub ratio_sem: f64,
+}
+
+impl KacComparison {
+    /// How many standard errors the ratio is from 1.
+    #[must_use]
+    pub fn deviation(&self) -> f64 {
+        (self.ratio - 1.0) / self.ratio_sem
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::escape::Survival;
+    use std::f64::consts::PI;
+
+    #[test]
+    fn zero_spin_closed_forms() {
+        // Unit circle: |∂Q| = 2π, |Q| = π, mean free path π|Q|/|∂Q| = π/2
+        // (the mean chord of the circle under the cos θ measure is
+        // ∫ 2cos θ · cos θ dθ/2 over (−π/2, π/2) = π/2).
+        let circle = KacPrediction::new(2.0 * PI, PI, 0.5, 0.0).unwrap();
+        assert!((circle.mean_free_time - PI / 2.0).abs() < 1e-15);
+        assert!((circle.mean_collisions - 4.0 * PI).abs() < 1e-12);
+        assert!((circle.mean_time - 2.0 * PI * PI).abs() < 1e-12);
+        // Unit square: |∂Q| = 4, |Q| = 1, mean free path π/4.
+        let square = KacPrediction::new(4.0, 1.0, 0.04, 0.0).unwrap();
+        assert!((square.mean_free_time - PI / 4.0).abs() < 1e-15);
+        assert!((square.mean_collisions - 100.0).abs() < 1e-12);
+        assert!((square.mean_time - 25.0 * PI).abs() < 1e-12);
+        assert!((square.hole_measure - 0.01).abs() < 1e-15);
+    }
+
+    #[test]
+    fn spin_changes_the_time_not_the_collisions() {
+        // For every α > 0: collisions |∂Q|/h as at α = 0, time 4|Q|/h.
+        let zero = KacPrediction::new(4.0, 1.0, 0.1, 0.0).unwrap();
+        for alpha in [1e-3, 0.4, 1.0] {
+            let k = KacPrediction::new(4.0, 1.0, 0.1, alpha).unwrap();
+            assert_eq!(k.mean_collisions, zero.mean_collisions);
+            assert!((k.mean_time - 4.0 / 0.1).abs() < 1e-12, "{k}");
+        }
+    }
+
+    #[test]
+    fn geometric_escape_matches_its_own_mean() {
+        // A sample whose mean is exactly the prediction (collisions
+        // 1..=2N−1 once each: mean N) gives ratio 1.
+        let kac = KacPrediction::new(4.0, 1.0, 0.04, 0.0).unwrap();
+        let counts: Vec<u64> = (1..200).collect();
+        let m = Survival::by_collisions(&counts, &vec![false; counts.len()])
+            .unwrap()
+            .mean_escape();
+        let cmp = kac.compare(m);
+        assert!((cmp.ratio - 1.0).abs() < 1e-12 && cmp.deviation().abs() < 1e-9);
+    }
+
+    #[test]
+    fn bad_inputs_are_refused() {
+        assert!(KacPrediction::new(4.0, 1.0, 0.0, 0.0).is_err());
+        assert!(KacPrediction::new(4.0, 1.0, 5.0, 0.0).is_err());
+        assert!(KacPrediction::new(4.0, f64::NAN, 0.1, 0.0).is_err());
+        assert!(KacPrediction::new(-4.0, 1.0, 0.1, 0.0).is_err());
+        assert!(KacPrediction::new(4.0, 1.0, 0.1, -0.1).is_err());
+    }
+}
