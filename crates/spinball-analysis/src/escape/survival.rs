@@ -243,7 +243,6 @@ impl Survival {
     /// error. With no ball censored this is the sample mean; otherwise it
     /// is a lower bound of the mean and says so
     /// ([`MeanEscape::complete`] false).
-    #[must_use]
     pub fn mean_escape(&self) -> MeanEscape {
         // Area under the step function from 0 to the last time, and, for
         // the variance, the area A_k after each escape time t_k:

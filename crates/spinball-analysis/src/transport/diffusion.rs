@@ -262,8 +262,9 @@ pub struct WindowScan {
     pub horizon: Horizon,
     /// One estimate per window, latest first.
     pub windows: Vec<Diffusion>,
-    /// The apparent `D` (slope against `4t`) per window, latest first.
-    pub apparent_d: Vec<PlusMinus>,
+    /// The apparent `D` (slope against `4t`, whatever the horizon) per
+    /// window, latest first.
+    pub apparent_d: Vec<DiffusionFit>,
     /// Its trend in `ln t`; `None` with a single window.
     pub trend: Option<Trend>,
 }
@@ -292,13 +293,15 @@ pub fn window_scan(d: &Displacements<'_>, horizon: Horizon) -> Result<WindowScan
             Err(e) if windows.is_empty() => return Err(e),
             Err(_) => break,
         };
-        let slopes = match horizon {
-            Horizon::Finite => slopes,
-            Horizon::Infinite => fit_window(d, Horizon::Finite, window)?.1,
+        let (apparent, slopes) = match horizon {
+            Horizon::Finite => (estimate.fit(), slopes),
+            Horizon::Infinite => {
+                let (normal, slopes) = fit_window(d, Horizon::Finite, window)?;
+                (normal.fit(), slopes)
+            }
         };
-        let (m, s) = mean_sem(&slopes);
         windows.push(estimate);
-        apparent_d.push(PlusMinus::new(m, s));
+        apparent_d.push(apparent);
         per_window.push(slopes);
         mids.push((window.t0 * window.t1).sqrt().ln());
         hi /= 2.0;

@@ -36,7 +36,7 @@ impl<'a> Displacements<'a> {
             }
         }
         let m = times.len();
-        if dr.len() % m != 0 || dr.len() / m < 2 {
+        if !dr.len().is_multiple_of(m) || dr.len() / m < 2 {
             return Err(TransportError::Shape {
                 len: dr.len(),
                 checkpoints: m,
