@@ -10,8 +10,8 @@ use std::fmt;
 use super::survival::{Clock, Survival};
 use super::{EscapeError, Sample};
 
-/// The fewest escapes a fit window (or each half of it, for the drift
-/// check, at least half of this) must hold: below 10 the error `γ/√D` is
+/// The fewest escapes a fit window (and each half of it, for the drift
+/// check) must hold: below 10 the error `γ/√D` is
 /// itself uncertain by more than 30 %.
 pub const MIN_EVENTS: u64 = 10;
 
@@ -90,8 +90,9 @@ pub struct EscapeRate {
     /// The rate on the second half of the window minus that on the first
     /// half (halves holding equal numbers of escapes), in standard errors.
     /// Beyond ±3 the rate is not constant on the window: the transient is
-    /// not over, or the tail is not exponential.
-    pub drift: f64,
+    /// not over, or the tail is not exponential. `None` when a half holds
+    /// fewer than [`MIN_EVENTS`] escapes (fewer than 20 in the window).
+    pub drift: Option<f64>,
     /// The window asked for.
     pub window: RateWindow,
 }
@@ -143,10 +144,8 @@ impl EscapeRate {
             window_rate(sample, clock, t0, tm),
             window_rate(sample, clock, tm, t1),
         ) {
-            (Ok(a), Ok(b)) if a.escaped >= MIN_EVENTS / 2 && b.escaped >= MIN_EVENTS / 2 => {
-                (b.gamma - a.gamma) / a.sem.hypot(b.sem)
-            }
-            _ => 0.0,
+            (Ok(a), Ok(b)) => Some((b.gamma - a.gamma) / a.sem.hypot(b.sem)),
+            _ => None,
         };
         let p0 = Survival::from_sample(sample, clock).at(t0);
         Ok(EscapeRate {
@@ -176,7 +175,7 @@ impl fmt::Display for EscapeRate {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "γ = {} per {} on [{}, {}] ({} escapes, drift {:.1} SE)",
+            "γ = {} per {} on [{}, {}] ({} escapes, drift {})",
             crate::estimators::PlusMinus::new(self.gamma, self.sem),
             match self.clock {
                 Clock::Time => "unit time",
@@ -186,6 +185,7 @@ impl fmt::Display for EscapeRate {
             self.t1,
             self.escaped,
             self.drift
+                .map_or_else(|| "not measured".to_string(), |z| format!("{z:.1} SE"))
         )
     }
 }
@@ -335,7 +335,7 @@ mod tests {
                     (fit.gamma - 0.7).abs() < 3.0 * fit.sem,
                     "seed {seed}: {fit}"
                 );
-                assert!(fit.drift.abs() < 3.0, "seed {seed}: {fit}");
+                assert!(fit.drift.unwrap().abs() < 3.0, "seed {seed}: {fit}");
                 assert!((fit.amplitude - 1.0).abs() < 0.1, "{fit:?}");
             }
         }
@@ -366,12 +366,12 @@ mod tests {
                 (late.gamma - 0.5).abs() < 3.0 * late.sem,
                 "seed {seed}: {late}"
             );
-            assert!(late.drift.abs() < 3.0, "{late}");
+            assert!(late.drift.unwrap().abs() < 3.0, "{late}");
             assert!((late.amplitude - 0.7).abs() < 0.05, "{late:?}");
             let all = EscapeRate::fit(&t, &c, RateWindow::Range { t0: 0.0, t1: 6.0 }).unwrap();
             assert!(all.gamma > 0.5 + 10.0 * all.sem, "seed {seed}: {all}");
             // The drift check sees the transient in the full window.
-            assert!(all.drift < -3.0, "{all}");
+            assert!(all.drift.unwrap() < -3.0, "{all}");
         }
     }
 
@@ -390,6 +390,17 @@ mod tests {
         let gamma = -(1.0 - p).ln();
         assert!((fit.gamma - gamma).abs() < 3.0 * fit.sem, "{fit}");
         assert_eq!(fit.clock, Clock::Collisions);
+    }
+
+    #[test]
+    fn drift_needs_enough_escapes_in_each_half() {
+        // 15 escapes: enough for γ (10), not for two halves of 10.
+        let t: Vec<f64> = (1..=15).map(f64::from).collect();
+        let fit =
+            EscapeRate::fit(&t, &[false; 15], RateWindow::Range { t0: 0.0, t1: 100.0 }).unwrap();
+        assert_eq!((fit.escaped, fit.drift), (15, None));
+        // γ = 15 escapes / Σt = 120 time units.
+        assert!((fit.gamma - 15.0 / 120.0).abs() < 1e-15);
     }
 
     #[test]

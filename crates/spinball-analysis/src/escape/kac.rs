@@ -20,6 +20,7 @@
 use std::fmt;
 
 use spinball_core::Sampler;
+use spinball_geometry::Boundary;
 
 use super::EscapeError;
 use super::survival::{Clock, MeanEscape};
@@ -105,6 +106,19 @@ impl KacPrediction {
         })
     }
 
+    /// The prediction for `table` (its perimeter, holes included, and its
+    /// area) with holes of total arc length `hole`, at `alpha`.
+    ///
+    /// # Errors
+    /// As [`KacPrediction::new`].
+    pub fn for_table<B: Boundary + ?Sized>(
+        table: &B,
+        hole: f64,
+        alpha: f64,
+    ) -> Result<Self, EscapeError> {
+        KacPrediction::new(table.perimeter(), table.area(), hole, alpha)
+    }
+
     /// The predicted mean on `clock`.
     #[must_use]
     pub fn mean(&self, clock: Clock) -> f64 {
@@ -185,6 +199,15 @@ mod tests {
         assert!((square.mean_collisions - 100.0).abs() < 1e-12);
         assert!((square.mean_time - 25.0 * PI).abs() < 1e-12);
         assert!((square.hole_measure - 0.01).abs() < 1e-15);
+    }
+
+    #[test]
+    fn a_table_gives_its_perimeter_and_area() {
+        // Stadium a = 1: |∂Q| = 4 + 2π, |Q| = 4 + π.
+        let stadium = spinball_geometry::Stadium::new(1.0).unwrap();
+        let k = KacPrediction::for_table(&stadium, 0.2, 0.4).unwrap();
+        assert!((k.perimeter - (4.0 + 2.0 * PI)).abs() < 1e-12);
+        assert!((k.mean_time - 4.0 * (4.0 + PI) / 0.2).abs() < 1e-9);
     }
 
     #[test]
