@@ -40,7 +40,7 @@ mod survival;
 
 pub use algebraic_tail::{AlgebraicTail, DECISION_Z, TailLaw, TailWindow};
 pub use escape_rate::{EscapeRate, MIN_EVENTS, RateWindow};
-pub use kac::{KacComparison, KacPrediction};
+pub use kac::{KacPrediction, KacRatio};
 pub use survival::{Clock, MeanEscape, Survival, SurvivalPoint, Z95};
 
 use thiserror::Error;
