@@ -200,7 +200,7 @@ fn islands(args: &FigureArgs, report: &mut Report) -> Result<(), BoxError> {
                 .with_threads(args.threads),
         )?;
         let (orbits, _) = periodic_orbits(&Billiard::new(&sinai, law), 2, &search)?;
-        panels.push(orbits_map_panel("Sinai L = 2, R = 1", &map, &orbits, 0.5));
+        panels.push(orbits_map_panel("Sinai R = 1", &map, &orbits, 0.5));
     }
     let axis = find_orbit(
         &Billiard::new(&sinai, SpinLaw::new(0.5)?),
@@ -266,9 +266,9 @@ fn islands(args: &FigureArgs, report: &mut Report) -> Result<(), BoxError> {
         grid = grid.panel(panel);
     }
     grid = grid
-        .panel(island_window_panel("Sinai axis orbit", &island, 0.5))
+        .panel(island_window_panel("axis orbit", &island, 0.5))
         .panel(island_area_panel(&curves));
-    report.png("islands.png", &grid, (1500, 1000))?;
+    report.png("islands.png", &grid, (1200, 800))?;
     report.csv("islands.csv", &csv)?;
     let body: Vec<_> = curves
         .iter()

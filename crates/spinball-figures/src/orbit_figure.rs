@@ -4,7 +4,7 @@
 
 use spinball_analysis::orbits::{Island, IslandCurve, PeriodicOrbit, StabilityClass};
 use spinball_analysis::phase_space::FtleMap;
-use spinball_plot::{LinePlot, MapPlot, RGBColor, Series, palette};
+use spinball_plot::{Legend, LinePlot, MapPlot, RGBColor, Series, palette};
 
 use crate::measured::ALPHA_LABEL;
 
@@ -50,7 +50,7 @@ pub fn orbits_map_panel(
         .markers(orbit_markers(orbits))
         .labels("s", "sin θ")
         .title(format!(
-            "{table}, α = {}: orbits (white elliptic, red hyperbolic)",
+            "{table}, α = {}: white elliptic, red hyperbolic",
             map.alpha
         ))
 }
@@ -95,7 +95,8 @@ pub fn island_area_panel(curves: &[(String, IslandCurve, f64)]) -> LinePlot {
         .title("island around the axis orbit (slice u = 0)")
         .x_label(ALPHA_LABEL)
         .y_label("area in (s, sin θ)")
-        .y_range(0.0, top);
+        .y_range(0.0, top)
+        .legend(Legend::UpperLeft);
     for (i, (label, curve, onset)) in curves.iter().enumerate() {
         let areas = curve.areas();
         plot = plot
