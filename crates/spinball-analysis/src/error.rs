@@ -102,6 +102,39 @@ pub enum AnalysisError {
     /// A transport (displacement) sample that cannot be analysed.
     #[error(transparent)]
     Transport(#[from] crate::transport::TransportError),
+    /// An island was asked of a periodic orbit that is not elliptic: no
+    /// island is centred on it.
+    #[error(
+        "the orbit is {class} (pair trace T = {pair_trace}), not elliptic (|T| < 2): no island is centred on it; follow it to an α where it is elliptic"
+    )]
+    NotElliptic {
+        /// Its class: `hyperbolic`, `parabolic` or `loxodromic`.
+        class: &'static str,
+        /// The trace of its multiplier pair.
+        pair_trace: f64,
+    },
+    /// The start on an elliptic orbit itself came out chaotic: the island
+    /// is smaller than the run resolves, or the run too short.
+    #[error(
+        "the cell of the orbit's point has FTLE {ftle:.3e} above the threshold {threshold}: no island is resolved around it (run more collisions, or the island is below the cell size)"
+    )]
+    OrbitCellChaotic {
+        /// The FTLE of the orbit's own start.
+        ftle: f64,
+        /// The threshold of a regular cell.
+        threshold: f64,
+    },
+    /// The regular cells around an orbit reach the edge of every window
+    /// tried, so no bounded island was measured.
+    #[error(
+        "the regular region around the orbit reaches the edge of the window along {axis} (half-width {half_width}): it is not bounded there (a band round the whole table, or more windows needed: raise max_windows or the first half-width)"
+    )]
+    IslandUnbounded {
+        /// `s` or `sin θ`.
+        axis: &'static str,
+        /// The half-width of the window along it.
+        half_width: f64,
+    },
 }
 
 impl AnalysisError {

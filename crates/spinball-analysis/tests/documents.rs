@@ -131,6 +131,7 @@ fn every_command_kind_reads_back_as_written() {
     let orbits = Document::Orbits(OrbitsDocument {
         table: "stadium:a=1".into(),
         diagram,
+        islands: None,
     });
     assert_eq!(round_trip(&orbits), orbits);
 

@@ -26,6 +26,9 @@
 //! - figures of one analysis each, with their CSV rows: [`EnergyPanels`]
 //!   (energy conservation), [`section_panel`] (Poincaré sections),
 //!   [`island_panel`] (FTLE maps with the bouncing-ball island),
+//!   [`orbits_map_panel`], [`island_window_panel`] and [`island_area_panel`]
+//!   (periodic orbits on an FTLE map, the island around one, its area
+//!   against α),
 //!   [`kac_histogram`] (return times against Kac's lemma),
 //!   [`q_class_panel`] and [`q_conserved_panel`] (`ΔQ` between collisions),
 //!   [`lcn_trace_panel`] (single-trajectory LCN traces),
@@ -67,6 +70,7 @@ mod island_figure;
 mod kac_figure;
 mod lcn_figure;
 mod measured;
+mod orbit_figure;
 mod plan;
 mod progress;
 mod q_figure;
@@ -95,6 +99,9 @@ pub use kac_figure::{
 };
 pub use lcn_figure::{LCN_TRACE_COLUMNS, LcnFinal, lcn_finals, lcn_trace_panel, lcn_trace_rows};
 pub use measured::{ALPHA_LABEL, LAMBDA_LABEL, measured, measured_band, paper_markers, scaled};
+pub use orbit_figure::{
+    class_colour, island_area_panel, island_window_panel, orbit_markers, orbits_map_panel,
+};
 pub use plan::{Plan, unit_grid};
 pub use progress::Progress;
 pub use q_figure::{

@@ -47,6 +47,7 @@ pub struct MapPlot {
     value_range: (f64, f64),
     cells: Option<Cells>,
     points: Vec<(f64, f64, f64)>,
+    markers: Vec<(f64, f64, RGBColor)>,
     outline: Option<Vec<bool>>,
     title: Option<String>,
     x_label: String,
@@ -63,6 +64,7 @@ impl MapPlot {
             value_range,
             cells: None,
             points: Vec::new(),
+            markers: Vec::new(),
             outline: None,
             title: None,
             x_label: String::new(),
@@ -82,6 +84,13 @@ impl MapPlot {
     /// Points `(x, y, value)` coloured by value (non-finite ones skipped).
     pub fn points(mut self, points: Vec<(f64, f64, f64)>) -> Self {
         self.points = points;
+        self
+    }
+    /// Markers `(x, y, colour)` drawn over everything, each a filled circle
+    /// ringed in black (positions of special points, such as periodic
+    /// orbits coloured by their stability; non-finite ones skipped).
+    pub fn markers(mut self, markers: Vec<(f64, f64, RGBColor)>) -> Self {
+        self.markers = markers;
         self
     }
     /// Outline, in red, the region of the grid's cells where `mask` is true
@@ -238,6 +247,17 @@ impl Plot for MapPlot {
                 .filter(|p| p.0.is_finite() && p.1.is_finite())
                 .map(|&(x, y, v)| Circle::new((x, y), radius, self.colour(v).filled())),
         )?;
+        let big = style.marker_radius.max(3) + 1;
+        for &(x, y, colour) in self
+            .markers
+            .iter()
+            .filter(|m| m.0.is_finite() && m.1.is_finite())
+        {
+            chart.draw_series([
+                Circle::new((x, y), big + 1, BLACK.filled()),
+                Circle::new((x, y), big, colour.filled()),
+            ])?;
+        }
         Ok(())
     }
 }

@@ -70,6 +70,7 @@ fn _spinball(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(runs::alpha_sweep, m)?)?;
     m.add_function(wrap_pyfunction!(runs::spectrum, m)?)?;
     m.add_function(wrap_pyfunction!(orbits::periodic_orbits, m)?)?;
+    m.add_function(wrap_pyfunction!(orbits::island_sizes, m)?)?;
     phase_space::register(m)?;
     Ok(())
 }

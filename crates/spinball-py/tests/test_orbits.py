@@ -28,3 +28,28 @@ def test_bad_arguments_are_value_errors():
         sb.periodic_orbits("stadium:a=1", 2, [])
     with pytest.raises(ValueError):
         sb.periodic_orbits("stadium:a=1", 2, [0.0, 0.5], precision=2.0)
+
+
+def test_island_sizes_zero_below_the_onset_and_positive_above():
+    # Sinai L = 2, R = 1: the axis orbit from s = L (middle of the bottom
+    # box wall) is hyperbolic below α* = 1/5 and elliptic above; its island
+    # at α = 0.5 is 0.55 ± 0.10 in (s, sin θ) at 41 cells (docs/PHASE_SPACE.md).
+    d = sb.island_sizes("sinai:L=2,R=1", 2.0, [0.1, 0.5], cells=21)
+    assert d["area"].dtype == np.float64 and d["area"].shape == (2,)
+    assert d["classes"] == ["hyperbolic", "elliptic"]
+    assert d["area"][0] == 0.0 and d["error"][0] == 0.0
+    assert d["area"][1] > 0.2 and d["error"][1] < 0.5 * d["area"][1]
+    assert np.isnan(d["s_min"][0]) and d["s_min"][1] < 2.0 < d["s_max"][1]
+    assert d["failures"] == [None, None]
+    up = [c for c in d["changes"] if c["crossing"] == 2.0][0]
+    assert abs(up["alpha"] - 0.2) <= up["error"] + 1e-12
+    # The same numbers again.
+    again = sb.island_sizes("sinai:L=2,R=1", 2.0, [0.1, 0.5], cells=21)
+    assert np.array_equal(d["area"], again["area"])
+
+
+def test_island_sizes_bad_arguments():
+    with pytest.raises(ValueError):
+        sb.island_sizes("sinai:L=2,R=1", 2.0, [])
+    with pytest.raises(ValueError):
+        sb.island_sizes("sinai:L=2,R=1", 2.0, [0.5], cells=20)

@@ -15,7 +15,10 @@
 //!   residue;
 //! - [`follow_in_alpha`]: continuation in α and the [`StabilityChange`]s;
 //! - [`stability_diagram`]: every orbit of a period followed through a list
-//!   of α, with flat [`OrbitRow`]s for CSV and JSON.
+//!   of α, with flat [`OrbitRow`]s for CSV and JSON;
+//! - [`island_around`]: the regular island around an elliptic orbit, its
+//!   area with an error and its extent ([`IslandOptions`], [`Island`]), and
+//!   [`island_sizes`]: that area against α along a continuation.
 //!
 //! # The map
 //!
@@ -97,11 +100,43 @@
 //! follows each through the list: the trace or residue of every orbit
 //! against α, and the α of each change of stability. An orbit lost on the
 //! way (it meets a corner or turns grazing) is listed, not an error.
+//!
+//! # Islands
+//!
+//! [`island_around`] measures the island of an elliptic orbit on the slice
+//! of the section at the spin `u₀` of one of its points (the point of
+//! smallest `s` by default), in the coordinates of an FTLE map:
+//! `(s, sin θ)`, `s` in the table's length and `sin θ = v∥/|v|` just after
+//! the collision (at `u₀ = 0`, as for the orbits along normals, this is
+//! `(s, v∥)`, the invariant measure's own coordinates). A window of
+//! `cells × cells` starts centred on the point (the middle cell's start is
+//! the orbit itself) is run as an FTLE map; the island is the set of
+//! regular cells (FTLE ≤ 0.01 per unit time, the paper's threshold) joined
+//! to the middle cell through cells sharing a side. Its area is their
+//! count times a cell's area, with the error of the grid: the count of the
+//! island's boundary cells (a side on a cell outside) times a cell's area,
+//! since the true edge passes through them. The window is refitted until
+//! the island fills about half of it: doubled along an axis where the
+//! island reaches the window's edge, shrunk where it spans less than a
+//! quarter.
+//!
+//! What is measured is the slice of a three-dimensional island through the
+//! orbit's point; regular cells cut off from the middle one (a chain of
+//! islands of a resonance around it) are not counted, and chaotic holes
+//! inside it are left out. Orbits that stick to the island's edge for the
+//! whole run count as regular: the area is an upper estimate by that much,
+//! which longer runs reduce.
+//!
+//! [`island_sizes`] follows an orbit through a list of α
+//! ([`follow_in_alpha`]) and measures its island at each: zero where the
+//! orbit is hyperbolic, measured where elliptic, `None` where parabolic.
 
 mod birkhoff_map;
 mod continuation;
 mod diagram;
 mod finder;
+mod island;
+mod island_sizes;
 mod matrix;
 mod search;
 mod stability;
@@ -110,5 +145,7 @@ pub use birkhoff_map::BirkhoffPoint;
 pub use continuation::{Continuation, StabilityChange, follow_in_alpha, orbit_at};
 pub use diagram::{ORBIT_CSV_HEADER, OrbitRow, StabilityDiagram, stability_diagram};
 pub use finder::{NewtonOptions, PeriodicOrbit, find_orbit};
+pub use island::{Island, IslandOptions, IslandSize, IslandWindow, island_around};
+pub use island_sizes::{IslandCurve, IslandPoint, island_point, island_sizes, islands_along};
 pub use search::{SearchOptions, grid_seeds, normal_seeds, periodic_orbits};
 pub use stability::{DEFAULT_CLASS_TOLERANCE, Multiplier, Stability, StabilityClass};

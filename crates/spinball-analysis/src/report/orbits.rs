@@ -5,7 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::orbits::StabilityDiagram;
+use crate::orbits::{IslandPoint, StabilityDiagram};
 
 /// A stability diagram (kind `spinball.orbits`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -14,4 +14,9 @@ pub struct OrbitsDocument {
     pub table: String,
     /// The orbits followed in α and where their stability changes.
     pub diagram: StabilityDiagram,
+    /// With `spinball orbits --islands`: the island of each orbit of
+    /// `diagram.branches` at each α (same order), measured where the orbit
+    /// is elliptic; absent otherwise.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub islands: Option<Vec<Vec<IslandPoint>>>,
 }

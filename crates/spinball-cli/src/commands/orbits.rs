@@ -5,7 +5,8 @@ use std::path::PathBuf;
 
 use clap::Args;
 use spinball_analysis::orbits::{
-    ORBIT_CSV_HEADER, SearchOptions, StabilityDiagram, stability_diagram,
+    IslandOptions, IslandPoint, ORBIT_CSV_HEADER, SearchOptions, StabilityDiagram, islands_along,
+    stability_diagram,
 };
 use spinball_analysis::report::{Document, OrbitsDocument};
 
@@ -43,6 +44,21 @@ pub struct OrbitsArgs {
     /// Grid seeds `NS,NV,NW` over (s, sin θ, √α u) (default none).
     #[arg(long, value_delimiter = ',', default_value = "0,0,0")]
     pub grid: Vec<u32>,
+    /// Also measure the regular island around each orbit at each α where
+    /// it is elliptic (FTLE map of a window centred on the orbit, flood
+    /// fill from its cell): adds `island_area`, `island_error` to the CSV
+    /// and `islands` to the JSON.
+    #[arg(long)]
+    pub islands: bool,
+    /// Cells per side of the island window (odd).
+    #[arg(long, default_value_t = 41)]
+    pub island_cells: usize,
+    /// Collisions per cell of the island window.
+    #[arg(long, default_value_t = 2000)]
+    pub island_collisions: u64,
+    /// Seed of the island maps' tangent directions.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
     /// Write the diagram as JSON here.
     #[arg(long)]
     pub json: Option<PathBuf>,
@@ -107,26 +123,88 @@ pub fn orbits(args: &OrbitsArgs) -> Result<(), CliError> {
     };
     let diagram = stability_diagram(&table, args.period, &alphas, args.precision, &search)
         .map_err(CliError::usage)?;
+    let islands = if args.islands {
+        let options = IslandOptions::default()
+            .with_cells(args.island_cells)
+            .with_collisions(args.island_collisions)
+            .with_seed(args.seed);
+        let per_branch = diagram
+            .branches
+            .iter()
+            .map(|b| islands_along(&table, b, &options))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(CliError::usage)?;
+        Some(per_branch)
+    } else {
+        None
+    };
     if let Some(path) = &args.json {
         let doc = Document::Orbits(OrbitsDocument {
             table: args.table.clone(),
             diagram: diagram.clone(),
+            islands: islands.clone(),
         });
         write_document(path, &doc, false)?;
     }
     if let Some(path) = &args.csv {
-        let mut text = String::from(ORBIT_CSV_HEADER);
-        text.push('\n');
-        for row in diagram.rows() {
-            text.push_str(&row.csv_line());
-            text.push('\n');
-        }
-        write_text(path, &text)?;
+        write_text(path, &csv(&diagram, islands.as_deref()))?;
     }
     if args.quiet {
         return Ok(());
     }
-    print(&summary(&args.table, &diagram))
+    let mut text = summary(&args.table, &diagram);
+    if let Some(islands) = &islands {
+        text.push_str(&island_summary(islands));
+    }
+    print(&text)
+}
+
+/// The diagram's rows as CSV, with the island's area and error at the end
+/// of each row when measured (empty where not known).
+fn csv(diagram: &StabilityDiagram, islands: Option<&[Vec<IslandPoint>]>) -> String {
+    let mut text = String::from(ORBIT_CSV_HEADER);
+    if islands.is_some() {
+        text.push_str(",island_area,island_error");
+    }
+    text.push('\n');
+    let points = islands.map(|i| i.iter().flatten().collect::<Vec<_>>());
+    let opt = |x: Option<f64>| x.map_or(String::new(), |x| x.to_string());
+    for (k, row) in diagram.rows().iter().enumerate() {
+        text.push_str(&row.csv_line());
+        if let Some(p) = points.as_ref().map(|p| p[k]) {
+            text.push_str(&format!(",{},{}", opt(p.area), opt(p.error)));
+        }
+        text.push('\n');
+    }
+    text
+}
+
+/// One line per orbit: its island area at each α where it is known.
+fn island_summary(islands: &[Vec<IslandPoint>]) -> String {
+    let mut out = String::new();
+    for (i, points) in islands.iter().enumerate() {
+        let known: Vec<String> = points
+            .iter()
+            .filter_map(|p| match (p.area, p.error) {
+                (Some(a), Some(e)) if a > 0.0 => Some(format!("{}: {a:.4e} +- {e:.1e}", p.alpha)),
+                _ => None,
+            })
+            .collect();
+        if !known.is_empty() {
+            out.push_str(&format!(
+                "orbit {i}: island area (s, sin theta) at alpha {}\n",
+                known.join(", ")
+            ));
+        }
+        for p in points.iter().filter(|p| p.failure.is_some()) {
+            out.push_str(&format!(
+                "orbit {i}: no island at alpha = {}: {}\n",
+                p.alpha,
+                p.failure.as_deref().unwrap_or_default()
+            ));
+        }
+    }
+    out
 }
 
 /// One line per orbit (at the first and last α) and per change.

@@ -320,6 +320,20 @@ def periodic_orbits(
     normal_samples: int = 4096,
     grid: Tuple[int, int, int] = (0, 0, 0),
 ) -> Dict[str, Any]: ...
+def island_sizes(
+    table: TableLike,
+    s: float,
+    alphas: Sequence[float],
+    *,
+    period: int = 2,
+    v_par: float = 0.0,
+    spin: float = 0.0,
+    precision: float = 1e-8,
+    cells: int = 41,
+    collisions: int = 2000,
+    seed: int = 0,
+    point: int = 0,
+) -> Dict[str, Any]: ...
 
 class MultilevelResult:
     """The result of ``lyapunov(..., estimator="multilevel")``."""
