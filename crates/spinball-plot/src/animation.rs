@@ -54,18 +54,31 @@ impl FilmFormat {
         }
     }
 
-    /// Check that a film of this format can be written at all before
-    /// anything is computed: for MP4, that `ffmpeg` runs.
+    /// Check, before anything is computed, that a film at `fps` can be
+    /// written in this format: a GIF at most [`MAX_GIF_FPS`] frames per
+    /// second, an MP4 with `ffmpeg` on `PATH`.
     ///
     /// # Errors
-    /// [`PlotError::FfmpegMissing`] for an MP4 without `ffmpeg` on `PATH`.
-    pub fn check_available(self) -> Result<(), PlotError> {
+    /// [`PlotError::Invalid`] for a GIF faster than [`MAX_GIF_FPS`];
+    /// [`PlotError::FfmpegMissing`] for an MP4 without `ffmpeg`.
+    pub fn check(self, fps: f64) -> Result<(), PlotError> {
         match self {
+            FilmFormat::Gif if fps > MAX_GIF_FPS => Err(PlotError::Invalid {
+                what: "fps",
+                why: format!(
+                    "{fps} frames per second: a GIF's frame delays are whole hundredths of a \
+                     second and players slow those under 2/100 s down; give at most \
+                     {MAX_GIF_FPS} fps for a GIF, or write an .mp4"
+                ),
+            }),
             FilmFormat::Gif => Ok(()),
             FilmFormat::Mp4 => crate::mp4_writer::check_ffmpeg(),
         }
     }
 }
+
+/// Default size of a film in pixels, `(width, height)`.
+pub const DEFAULT_FILM_SIZE: (u32, u32) = (480, 360);
 
 /// Highest frame rate a GIF can show: its delays are whole hundredths of a
 /// second, and players slow delays below two hundredths down.
@@ -291,18 +304,7 @@ impl Animation {
         let path = path.as_ref();
         let format = FilmFormat::of_path(path)?;
         self.validate()?;
-        if format == FilmFormat::Gif && self.fps > MAX_GIF_FPS {
-            return Err(PlotError::Invalid {
-                what: "fps",
-                why: format!(
-                    "{} frames per second: a GIF's frame delays are whole hundredths of a \
-                     second and players slow those under 2/100 s down; give at most \
-                     {MAX_GIF_FPS} fps for a GIF, or write an .mp4",
-                    self.fps
-                ),
-            });
-        }
-        format.check_available()?;
+        format.check(self.fps)?;
         if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
             std::fs::create_dir_all(dir).map_err(|source| PlotError::Io {
                 path: dir.to_path_buf(),

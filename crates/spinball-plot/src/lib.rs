@@ -77,7 +77,7 @@ mod plot;
 mod style;
 mod table_plot;
 
-pub use animation::{Animation, FilmFormat, MAX_GIF_FPS};
+pub use animation::{Animation, DEFAULT_FILM_SIZE, FilmFormat, MAX_GIF_FPS};
 pub use colormap::{PALETTE, palette, viridis};
 pub use error::PlotError;
 pub use format::{format_tick, format_tick_on, snap_tick};

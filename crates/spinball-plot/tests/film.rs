@@ -130,7 +130,7 @@ fn an_mp4_is_written_where_ffmpeg_is_installed() {
     let dir = temp_dir("mp4");
     let path = dir.join("film.mp4");
     let result = film(10, 10.0).save(&path, 241, 161, |_, _| {});
-    if FilmFormat::Mp4.check_available().is_err() {
+    if FilmFormat::Mp4.check(10.0).is_err() {
         // No ffmpeg here: the typed error that says what to do, no file.
         let e = result.unwrap_err();
         assert!(matches!(e, PlotError::FfmpegMissing), "{e}");

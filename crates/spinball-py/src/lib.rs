@@ -22,6 +22,7 @@
 
 use pyo3::prelude::*;
 
+pub mod animation;
 pub mod args;
 pub mod billiard;
 pub mod errors;
@@ -70,6 +71,7 @@ fn _spinball(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(runs::alpha_sweep, m)?)?;
     m.add_function(wrap_pyfunction!(runs::spectrum, m)?)?;
     m.add_function(wrap_pyfunction!(orbits::periodic_orbits, m)?)?;
+    m.add_function(wrap_pyfunction!(animation::animate, m)?)?;
     phase_space::register(m)?;
     Ok(())
 }

@@ -15,6 +15,11 @@ pub const MAX_FRAMES: usize = 100_000;
 /// start so fast, or a `speed` so high, that the film would run for hours.
 pub const MAX_COLLISIONS_PER_BALL: u64 = 10_000_000;
 
+/// Default frame rate of a film (what the command line and Python use).
+pub const DEFAULT_FPS: f64 = 20.0;
+/// Default length of a film in seconds.
+pub const DEFAULT_DURATION: f64 = 6.0;
+
 /// Default billiard time per second of film, in units of the table's
 /// [`unit_length`](Boundary::unit_length) (a ball with all of its energy
 /// ½ in translation crosses one unit of length per unit of time).
@@ -53,6 +58,13 @@ pub struct FrameOptions {
     /// Drawn ball radius `r`, in table lengths (`None`: 0.1 of the table's
     /// [`unit_length`](Boundary::unit_length)).
     pub radius: Option<f64>,
+}
+
+impl Default for FrameOptions {
+    /// [`DEFAULT_FPS`] for [`DEFAULT_DURATION`], default speed and radius.
+    fn default() -> Self {
+        FrameOptions::new(DEFAULT_FPS, DEFAULT_DURATION)
+    }
 }
 
 impl FrameOptions {

@@ -43,5 +43,7 @@ mod frame_options;
 mod frames;
 
 pub use ball_track::{BallTrack, CollisionMark, track_ball};
-pub use frame_options::{FrameOptions, MAX_COLLISIONS_PER_BALL, MAX_FPS, MAX_FRAMES};
+pub use frame_options::{
+    DEFAULT_DURATION, DEFAULT_FPS, FrameOptions, MAX_COLLISIONS_PER_BALL, MAX_FPS, MAX_FRAMES,
+};
 pub use frames::{Frames, animation_frames};
