@@ -73,22 +73,24 @@ fn bad_films_are_refused_before_the_run() {
     let gif = dir.join("x.gif");
     let g = gif.to_str().unwrap();
     let base = ["animate", "--table", "stadium:a=1", "--alpha", "0.5"];
-    let with = |extra: &[&str]| [base.as_slice(), extra].concat();
+    fn with<'a>(base: &[&'a str], extra: &[&'a str]) -> Vec<&'a str> {
+        [base, extra].concat()
+    }
     let missing = dir.join("no/such/dir/x.gif");
     refused(
-        &with(&["-o", missing.to_str().unwrap()]),
+        &with(&base, &["-o", missing.to_str().unwrap()]),
         &["--output", "does not exist"],
     );
-    refused(&with(&["-o", dir.join("x.png").to_str().unwrap()]), &[".gif or .mp4"]);
-    refused(&with(&["--fps", "60", "-o", g]), &["at most 50 fps", ".mp4"]);
-    refused(&with(&["--fps", "0", "-o", g]), &["fps"]);
-    refused(&with(&["--duration", "-1", "-o", g]), &["duration"]);
-    refused(&with(&["--radius", "0", "-o", g]), &["radius"]);
-    refused(&with(&["--balls", "0", "-o", g]), &["balls"]);
-    refused(&with(&["--start", "5,0,1,0", "-o", g]), &["outside"]);
-    refused(&with(&["--start", "0,0,1", "-o", g]), &["x,y,vx,vy"]);
-    refused(&with(&["--size", "20x20", "-o", g]), &["too small"]);
-    refused(&with(&["--size", "big", "-o", g]), &["WIDTHxHEIGHT"]);
+    refused(&with(&base, &["-o", dir.join("x.png").to_str().unwrap()]), &[".gif or .mp4"]);
+    refused(&with(&base, &["--fps", "60", "-o", g]), &["at most 50 fps", ".mp4"]);
+    refused(&with(&base, &["--fps", "0", "-o", g]), &["fps"]);
+    refused(&with(&base, &["--duration", "-1", "-o", g]), &["duration"]);
+    refused(&with(&base, &["--radius", "0", "-o", g]), &["radius"]);
+    refused(&with(&base, &["--balls", "0", "-o", g]), &["balls"]);
+    refused(&with(&base, &["--start", "5,0,1,0", "-o", g]), &["outside"]);
+    refused(&with(&base, &["--start", "0,0,1", "-o", g]), &["x,y,vx,vy"]);
+    refused(&with(&base, &["--size", "20x20", "-o", g]), &["too small"]);
+    refused(&with(&base, &["--size", "big", "-o", g]), &["WIDTHxHEIGHT"]);
     refused(
         &["animate", "--table", "stadium:a=1", "--alpha", "2", "-o", g],
         &["--alpha"],
@@ -98,11 +100,11 @@ fn bad_films_are_refused_before_the_run() {
     let mp4 = dir.join("x.mp4");
     let ffmpeg = std::process::Command::new("ffmpeg").arg("-version").output();
     if ffmpeg.is_ok_and(|o| o.status.success()) {
-        ok(&with(&["--duration", "0.5", "-o", mp4.to_str().unwrap()]));
+        ok(&with(&base, &["--duration", "0.5", "-o", mp4.to_str().unwrap()]));
         assert!(std::fs::metadata(&mp4).unwrap().len() > 500);
     } else {
         refused(
-            &with(&["-o", mp4.to_str().unwrap()]),
+            &with(&base, &["-o", mp4.to_str().unwrap()]),
             &["install ffmpeg", ".gif"],
         );
         println!("skipped: ffmpeg is not on PATH, the MP4 film was not written");

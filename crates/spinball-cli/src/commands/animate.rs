@@ -35,7 +35,7 @@ pub struct AnimateArgs {
     pub balls: u64,
     /// An explicit start `x,y,vx,vy[,u]` (repeat for several balls)
     /// instead of drawn ones.
-    #[arg(long, allow_negative_numbers = true, value_parser = parse_start)]
+    #[arg(long, allow_hyphen_values = true, value_parser = parse_start)]
     pub start: Vec<State>,
     /// Seed of the drawn starts.
     #[arg(long, default_value_t = 1)]
@@ -44,18 +44,18 @@ pub struct AnimateArgs {
     #[arg(long, value_enum, default_value_t = SamplerArg::Paper)]
     pub sampler: SamplerArg,
     /// Frames per second (a GIF takes at most 50).
-    #[arg(long, default_value_t = DEFAULT_FPS)]
+    #[arg(long, default_value_t = DEFAULT_FPS, allow_negative_numbers = true)]
     pub fps: f64,
     /// Length of the film in seconds.
-    #[arg(long, default_value_t = DEFAULT_DURATION)]
+    #[arg(long, default_value_t = DEFAULT_DURATION, allow_negative_numbers = true)]
     pub duration: f64,
     /// Billiard time shown per second of film [default: 4 × the table's
     /// unit length, e.g. 4 for the stadium with unit caps].
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub speed: Option<f64>,
     /// Drawn ball radius r in table lengths; the marker turns at ω = u/r
     /// [default: 0.1 × the table's unit length].
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub radius: Option<f64>,
     /// Film size in pixels, `WIDTHxHEIGHT`.
     #[arg(long, value_parser = parse_size, default_value = "480x360")]
