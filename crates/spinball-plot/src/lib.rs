@@ -1,7 +1,8 @@
 //! Plots for [spinball](https://docs.rs/spinball): the pictures a physicist
 //! puts in a talk, drawn to PNG with a bundled font and no system libraries.
 //!
-//! The crate is small on purpose. It draws these things, each a [`Plot`] but the film:
+//! The crate is small on purpose. It draws these things, each a [`Plot`]
+//! (but the film, which has its own `save`):
 //! - [`TablePlot`]: a table outline (any built-in [`Table`] or a
 //!   [`SegmentTable`]), optionally with a trajectory coloured from early to
 //!   late by the [`viridis`] colormap;
