@@ -6,29 +6,23 @@ use std::path::PathBuf;
 use clap::Args;
 use spinball_analysis::animation::{DEFAULT_DURATION, DEFAULT_FPS, FrameOptions, animation_frames};
 use spinball_analysis::run::Starts;
-use spinball_core::{Billiard, Sampler, SpinLaw, State};
+use spinball_core::{Billiard, Sampler, State};
 use spinball_geometry::DVec2;
 use spinball_plot::{Animation, DEFAULT_FILM_SIZE, FilmFormat};
 
 use crate::error::CliError;
 use crate::files::check_outputs;
+use crate::phase_args::SceneArgs;
 use crate::run_args::SamplerArg;
 use crate::stdout::print;
-use crate::table_arg::read_table;
 use crate::watch::progress_bar_counting;
 
 /// The arguments of `spinball animate`.
 #[derive(Debug, Clone, Args)]
 pub struct AnimateArgs {
-    /// The table (spec or table file, as for `lyapunov`).
-    #[arg(long)]
-    pub table: String,
-    /// Spin parameter α.
-    #[arg(long, allow_negative_numbers = true)]
-    pub alpha: f64,
-    /// Allow α > 1.
-    #[arg(long)]
-    pub extended: bool,
+    /// The table and α.
+    #[command(flatten)]
+    pub scene: SceneArgs,
     /// How many balls, drawn as initial conditions 0..N of --seed (as an
     /// ensemble draws them).
     #[arg(long, default_value_t = 1, conflicts_with = "start")]
@@ -89,13 +83,7 @@ fn parse_size(s: &str) -> Result<(u32, u32), String> {
 /// [`CliError::Failed`] if a step fails or the film cannot be written.
 pub fn animate(args: &AnimateArgs) -> Result<(), CliError> {
     debug_assert_eq!(DEFAULT_FILM_SIZE, (480, 360), "the --size default above");
-    let table = read_table(&args.table)?;
-    let law = if args.extended {
-        SpinLaw::extended(args.alpha)
-    } else {
-        SpinLaw::new(args.alpha)
-    }
-    .map_err(|e| CliError::Usage(format!("--alpha {}: {e}", args.alpha)))?;
+    let (table, law) = args.scene.setup()?;
     let format = FilmFormat::of_path(&args.output)
         .map_err(|e| CliError::Usage(format!("--output: {e}")))?;
     format.check(args.fps).map_err(|e| CliError::Usage(format!("--output {}: {e}", args.output.display())))?;
@@ -116,7 +104,7 @@ pub fn animate(args: &AnimateArgs) -> Result<(), CliError> {
     let title = args
         .title
         .clone()
-        .unwrap_or_else(|| format!("{table}, α = {}", args.alpha));
+        .unwrap_or_else(|| format!("{table}, α = {}", args.scene.alpha));
     let billiard = Billiard::new(table, law);
     let frames = animation_frames(&billiard, &starts, balls, args.seed, &options).map_err(|e| {
         match e {
