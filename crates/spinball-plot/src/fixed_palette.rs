@@ -85,7 +85,7 @@ impl FixedPalette {
         };
         let cells = (0..1usize << 15)
             .map(|cell| {
-                let channel = |shift: usize| (((cell >> shift) & 31) as u8) << 3 | 4;
+                let channel = |shift: usize| ((((cell >> shift) & 31) as u8) << 3) | 4;
                 nearest([channel(10), channel(5), channel(0)])
             })
             .collect();

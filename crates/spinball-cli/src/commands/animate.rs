@@ -65,6 +65,9 @@ pub struct AnimateArgs {
     pub quiet: bool,
 }
 
+// The `--size` default above is the library's.
+const _: () = assert!(DEFAULT_FILM_SIZE.0 == 480 && DEFAULT_FILM_SIZE.1 == 360);
+
 /// Parse `--size WIDTHxHEIGHT`.
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
     let bad = || format!("{s}: give the size as WIDTHxHEIGHT in pixels, e.g. 480x360");
@@ -82,7 +85,6 @@ fn parse_size(s: &str) -> Result<(u32, u32), String> {
 /// (checked before anything runs, ffmpeg's presence for an MP4 too);
 /// [`CliError::Failed`] if a step fails or the film cannot be written.
 pub fn animate(args: &AnimateArgs) -> Result<(), CliError> {
-    debug_assert_eq!(DEFAULT_FILM_SIZE, (480, 360), "the --size default above");
     let (table, law) = args.scene.setup()?;
     let format = FilmFormat::of_path(&args.output)
         .map_err(|e| CliError::Usage(format!("--output: {e}")))?;
