@@ -57,21 +57,19 @@ fn frames_lie_in_the_table_and_on_the_chords_between_collisions() {
             Table::Sinai(Sinai::new(2.0, 1.0).unwrap()),
         ] {
             let billiard = Billiard::new(table.clone(), SpinLaw::new(alpha).unwrap());
-            let frames = animation_frames(
-                &billiard,
-                &Starts::Sampled(Sampler::Paper),
-                3,
-                7,
-                &options,
-            )
-            .unwrap();
+            let frames =
+                animation_frames(&billiard, &Starts::Sampled(Sampler::Paper), 3, 7, &options)
+                    .unwrap();
             assert_eq!(frames.frame_count(), 200);
             for track in &frames.balls {
                 assert!(track.collisions.len() > 200, "too few collisions to test");
                 for (k, p) in track.positions.iter().enumerate() {
                     // Signed distance is exact inside: rounding only.
                     let d = signed_distance(&table, *p);
-                    assert!(d > -1e-12, "{table} α={alpha} frame {k}: {p:?} is {d:.2e} inside");
+                    assert!(
+                        d > -1e-12,
+                        "{table} α={alpha} frame {k}: {p:?} is {d:.2e} inside"
+                    );
                     assert!(table.contains(*p), "{table} frame {k}: {p:?}");
                 }
                 check_on_chords(track, table.length_scale());
@@ -97,12 +95,19 @@ fn no_wall_is_skipped_between_frames() {
         let c = billiard.step(&mut ball).unwrap();
         t += c.time();
         let mark = track.collisions[n];
-        assert_eq!((mark.time, mark.point, mark.spin), (t, c.point(), ball.spin()));
+        assert_eq!(
+            (mark.time, mark.point, mark.spin),
+            (t, c.point(), ball.spin())
+        );
         n += 1;
     }
     // All up to the last frame, and the first one after it.
     assert_eq!(track.collisions.len(), n);
-    assert!(n > 5 * track.len(), "{n} collisions for {} frames", track.len());
+    assert!(
+        n > 5 * track.len(),
+        "{n} collisions for {} frames",
+        track.len()
+    );
     check_on_chords(&track, 1.0);
     for p in &track.positions {
         assert!(billiard.table().contains(*p));
@@ -117,8 +122,8 @@ fn spin_angle_advances_by_omega_dt() {
     let r = 0.05;
     let billiard = Billiard::new(Stadium::new(1.0).unwrap(), SpinLaw::new(0.5).unwrap());
     let options = FrameOptions::new(25.0, 8.0).with_speed(5.0).with_radius(r);
-    let frames = animation_frames(&billiard, &Starts::Sampled(Sampler::Paper), 4, 3, &options)
-        .unwrap();
+    let frames =
+        animation_frames(&billiard, &Starts::Sampled(Sampler::Paper), 4, 3, &options).unwrap();
     assert_eq!(frames.radius, r);
     for track in &frames.balls {
         assert_eq!(track.angles[0], 0.0);
@@ -150,7 +155,10 @@ fn spin_angle_advances_by_omega_dt() {
                 assert!((got - u * (t1 - t0) / r).abs() < 1e-10 * (1.0 + track.angles[k].abs()));
             }
         }
-        assert!(turned_within > 50, "only {turned_within} frame pairs within a flight");
+        assert!(
+            turned_within > 50,
+            "only {turned_within} frame pairs within a flight"
+        );
     }
 }
 
@@ -184,18 +192,30 @@ fn bad_films_are_refused_with_the_reason() {
     )
     .unwrap_err();
     assert!(matches!(e, AnalysisError::Launch { index: 1, .. }), "{e}");
-    let e = animation_frames(&billiard, &Starts::States(vec![inside]), 2, 1, &options)
-        .unwrap_err();
+    let e = animation_frames(&billiard, &Starts::States(vec![inside]), 2, 1, &options).unwrap_err();
     assert!(e.to_string().contains("only 1 states"), "{e}");
     for balls in [0, 1001] {
-        let e = animation_frames(&billiard, &Starts::Sampled(Sampler::Paper), balls, 1, &options)
-            .unwrap_err();
-        assert!(matches!(e, AnalysisError::InvalidOption { name: "balls", .. }), "{e}");
+        let e = animation_frames(
+            &billiard,
+            &Starts::Sampled(Sampler::Paper),
+            balls,
+            1,
+            &options,
+        )
+        .unwrap_err();
+        assert!(
+            matches!(e, AnalysisError::InvalidOption { name: "balls", .. }),
+            "{e}"
+        );
     }
     // A ball a million times faster than the energy shell would need
     // about 1e8 collisions: refused, not run for minutes.
     let fast = State::new(DVec2::ZERO, DVec2::new(3e5, 4e5), 0.0);
-    let e = track_ball(&billiard, fast, &FrameOptions::new(10.0, 60.0).with_speed(10.0))
-        .unwrap_err();
+    let e = track_ball(
+        &billiard,
+        fast,
+        &FrameOptions::new(10.0, 60.0).with_speed(10.0),
+    )
+    .unwrap_err();
     assert!(e.to_string().contains("collisions"), "{e}");
 }

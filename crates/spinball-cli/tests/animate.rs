@@ -36,21 +36,54 @@ fn a_gif_of_drawn_balls_has_the_frames_size_and_delay_asked_for() {
     let dir = scratch("animate");
     let path = dir.join("stadium.gif");
     let out = ok(&[
-        "animate", "--table", "stadium:a=1", "--alpha", "0.5", "--balls", "3", "--fps", "10",
-        "--duration", "1.5", "--size", "200x150", "-o", path.to_str().unwrap(),
+        "animate",
+        "--table",
+        "stadium:a=1",
+        "--alpha",
+        "0.5",
+        "--balls",
+        "3",
+        "--fps",
+        "10",
+        "--duration",
+        "1.5",
+        "--size",
+        "200x150",
+        "-o",
+        path.to_str().unwrap(),
     ]);
     let said = String::from_utf8_lossy(&out.stdout);
-    assert!(said.contains("15 frames at 10 fps") && said.contains("3 balls"), "{said}");
+    assert!(
+        said.contains("15 frames at 10 fps") && said.contains("3 balls"),
+        "{said}"
+    );
     let (size, frames, delays) = gif_shape(&path);
     assert_eq!((size, frames), ((200, 150), 15));
     assert!(delays.iter().all(|&d| d == 10), "{delays:?}");
     // The same seed gives the same film, byte for byte.
     let again = dir.join("again.gif");
     ok(&[
-        "animate", "--table", "stadium:a=1", "--alpha", "0.5", "--balls", "3", "--fps", "10",
-        "--duration", "1.5", "--size", "200x150", "--quiet", "-o", again.to_str().unwrap(),
+        "animate",
+        "--table",
+        "stadium:a=1",
+        "--alpha",
+        "0.5",
+        "--balls",
+        "3",
+        "--fps",
+        "10",
+        "--duration",
+        "1.5",
+        "--size",
+        "200x150",
+        "--quiet",
+        "-o",
+        again.to_str().unwrap(),
     ]);
-    assert_eq!(std::fs::read(&path).unwrap(), std::fs::read(&again).unwrap());
+    assert_eq!(
+        std::fs::read(&path).unwrap(),
+        std::fs::read(&again).unwrap()
+    );
 }
 
 #[test]
@@ -58,12 +91,33 @@ fn explicit_starts_are_one_ball_each() {
     let dir = scratch("animate-starts");
     let path = dir.join("sinai.gif");
     let out = ok(&[
-        "animate", "--table", "sinai:L=2,R=1", "--alpha", "0.4", "--start", "-1.5,-1.5,0.6,0.8,0.3",
-        "--start", "1.5,1.5,-0.8,0.6", "--fps", "8", "--duration", "1", "--speed", "2",
-        "--radius", "0.2", "--title", "", "-o", path.to_str().unwrap(),
+        "animate",
+        "--table",
+        "sinai:L=2,R=1",
+        "--alpha",
+        "0.4",
+        "--start",
+        "-1.5,-1.5,0.6,0.8,0.3",
+        "--start",
+        "1.5,1.5,-0.8,0.6",
+        "--fps",
+        "8",
+        "--duration",
+        "1",
+        "--speed",
+        "2",
+        "--radius",
+        "0.2",
+        "--title",
+        "",
+        "-o",
+        path.to_str().unwrap(),
     ]);
     let said = String::from_utf8_lossy(&out.stdout);
-    assert!(said.contains("8 frames") && said.contains("2 balls"), "{said}");
+    assert!(
+        said.contains("8 frames") && said.contains("2 balls"),
+        "{said}"
+    );
     assert_eq!(gif_shape(&path).1, 8);
 }
 
@@ -81,8 +135,14 @@ fn bad_films_are_refused_before_the_run() {
         &with(&base, &["-o", missing.to_str().unwrap()]),
         &["--output", "does not exist"],
     );
-    refused(&with(&base, &["-o", dir.join("x.png").to_str().unwrap()]), &[".gif or .mp4"]);
-    refused(&with(&base, &["--fps", "60", "-o", g]), &["at most 50 fps", ".mp4"]);
+    refused(
+        &with(&base, &["-o", dir.join("x.png").to_str().unwrap()]),
+        &[".gif or .mp4"],
+    );
+    refused(
+        &with(&base, &["--fps", "60", "-o", g]),
+        &["at most 50 fps", ".mp4"],
+    );
     refused(&with(&base, &["--fps", "0", "-o", g]), &["fps"]);
     refused(&with(&base, &["--duration", "-1", "-o", g]), &["duration"]);
     refused(&with(&base, &["--radius", "0", "-o", g]), &["radius"]);
@@ -98,9 +158,14 @@ fn bad_films_are_refused_before_the_run() {
     assert!(!gif.exists(), "nothing written");
     // An MP4 needs ffmpeg: without it, the message says what to do.
     let mp4 = dir.join("x.mp4");
-    let ffmpeg = std::process::Command::new("ffmpeg").arg("-version").output();
+    let ffmpeg = std::process::Command::new("ffmpeg")
+        .arg("-version")
+        .output();
     if ffmpeg.is_ok_and(|o| o.status.success()) {
-        ok(&with(&base, &["--duration", "0.5", "-o", mp4.to_str().unwrap()]));
+        ok(&with(
+            &base,
+            &["--duration", "0.5", "-o", mp4.to_str().unwrap()],
+        ));
         assert!(std::fs::metadata(&mp4).unwrap().len() > 500);
     } else {
         refused(

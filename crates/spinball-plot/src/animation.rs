@@ -188,7 +188,8 @@ impl Animation {
                     });
                 }
             }
-            if !(b.positions.iter().all(|p| p.is_finite()) && b.angles.iter().all(|a| a.is_finite()))
+            if !(b.positions.iter().all(|p| p.is_finite())
+                && b.angles.iter().all(|a| a.is_finite()))
             {
                 return Err(PlotError::Invalid {
                     what: "ball",
@@ -226,12 +227,17 @@ impl Animation {
         for k in 0..self.frame_count() {
             frame.copy_from_slice(&background);
             {
-                let root = BitMapBackend::with_buffer(&mut frame, (width, height)).into_drawing_area();
+                let root =
+                    BitMapBackend::with_buffer(&mut frame, (width, height)).into_drawing_area();
                 for (i, b) in self.balls.iter().enumerate() {
                     let colour = PALETTE[i % PALETTE.len()];
                     let c = to_pixel.apply(b.positions[k]);
                     let centre = (c.x.round() as i32, c.y.round() as i32);
-                    root.draw(&Circle::new(centre, ball_px.round() as i32, colour.filled()))?;
+                    root.draw(&Circle::new(
+                        centre,
+                        ball_px.round() as i32,
+                        colour.filled(),
+                    ))?;
                     // Screen y runs down: counter-clockwise on the table is
                     // counter-clockwise on the screen.
                     let rim = c + 0.9 * ball_px * DVec2::new(b.angles[k].cos(), -b.angles[k].sin());

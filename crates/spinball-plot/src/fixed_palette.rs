@@ -107,7 +107,8 @@ impl FixedPalette {
         if let Some((_, i)) = self.exact.iter().find(|(e, _)| *e == c) {
             return *i;
         }
-        let cell = (usize::from(c[0] >> 3) << 10) | (usize::from(c[1] >> 3) << 5) | usize::from(c[2] >> 3);
+        let cell =
+            (usize::from(c[0] >> 3) << 10) | (usize::from(c[1] >> 3) << 5) | usize::from(c[2] >> 3);
         self.cells[cell]
     }
 

@@ -36,7 +36,12 @@ pub(crate) fn gif_delay(fps: f64) -> u16 {
 impl GifWriter {
     /// A new GIF of `width × height` at `path`, frames `1/fps` apart
     /// (rounded to hundredths of a second).
-    pub(crate) fn create(path: &Path, width: u32, height: u32, fps: f64) -> Result<Self, PlotError> {
+    pub(crate) fn create(
+        path: &Path,
+        width: u32,
+        height: u32,
+        fps: f64,
+    ) -> Result<Self, PlotError> {
         let side = |v: u32| {
             u16::try_from(v).map_err(|_| PlotError::TooSmall {
                 what: "GIF (sides up to 65535 px)",
@@ -131,7 +136,13 @@ fn changed_rect(a: &[u8], b: &[u8], w: usize, h: usize) -> (usize, usize, usize,
             continue;
         }
         let first = ra.iter().zip(rb).position(|(p, q)| p != q).unwrap_or(0);
-        let last = w - 1 - ra.iter().rev().zip(rb.iter().rev()).position(|(p, q)| p != q).unwrap_or(0);
+        let last = w
+            - 1
+            - ra.iter()
+                .rev()
+                .zip(rb.iter().rev())
+                .position(|(p, q)| p != q)
+                .unwrap_or(0);
         x0 = x0.min(first);
         x1 = x1.max(last);
         y0 = y0.min(y);

@@ -64,8 +64,8 @@
 mod animation;
 mod colormap;
 mod error;
-pub mod font;
 mod fixed_palette;
+pub mod font;
 mod format;
 mod gif_writer;
 mod grid;

@@ -204,8 +204,11 @@ pub(crate) fn table_chart<'a, DB: DrawingBackend>(
 }
 
 /// A chart in table coordinates.
-pub(crate) type TableChart<'a, DB> =
-    ChartContext<'a, DB, Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>>;
+pub(crate) type TableChart<'a, DB> = ChartContext<
+    'a,
+    DB,
+    Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+>;
 
 /// The walls of `outline`, in black, on top of what the chart holds.
 pub(crate) fn draw_walls<DB: DrawingBackend>(

@@ -34,7 +34,9 @@ fn film(frames: usize, fps: f64) -> Animation {
 fn decode(path: &PathBuf) -> ((usize, usize), Vec<Vec<u8>>, Vec<u16>) {
     let mut options = gif::DecodeOptions::new();
     options.set_color_output(gif::ColorOutput::Indexed);
-    let mut decoder = options.read_info(std::fs::File::open(path).unwrap()).unwrap();
+    let mut decoder = options
+        .read_info(std::fs::File::open(path).unwrap())
+        .unwrap();
     let (w, h) = (usize::from(decoder.width()), usize::from(decoder.height()));
     let palette = decoder.global_palette().expect("a global palette").to_vec();
     let mut canvas = vec![0u8; 3 * w * h];
@@ -105,9 +107,13 @@ fn a_gif_decodes_to_the_frames_size_and_delay_asked_for() {
 #[test]
 fn bad_films_are_refused_and_leave_no_file() {
     let dir = temp_dir("bad");
-    let e = film(5, 10.0).save(dir.join("a.png"), 200, 200, |_, _| {}).unwrap_err();
+    let e = film(5, 10.0)
+        .save(dir.join("a.png"), 200, 200, |_, _| {})
+        .unwrap_err();
     assert!(matches!(e, PlotError::Invalid { what: "path", .. }), "{e}");
-    let e = film(5, 60.0).save(dir.join("fast.gif"), 200, 200, |_, _| {}).unwrap_err();
+    let e = film(5, 60.0)
+        .save(dir.join("fast.gif"), 200, 200, |_, _| {})
+        .unwrap_err();
     assert!(e.to_string().contains("at most 50 fps"), "{e}");
     let e = Animation::new(&Sinai::new(2.0, 1.0).unwrap(), 10.0, 0.1)
         .save(dir.join("empty.gif"), 200, 200, |_, _| {})
@@ -118,7 +124,9 @@ fn bad_films_are_refused_and_leave_no_file() {
         .save(dir.join("short.gif"), 200, 200, |_, _| {})
         .unwrap_err();
     assert!(matches!(e, PlotError::LengthMismatch { .. }), "{e}");
-    let e = film(5, 10.0).save(dir.join("tiny.gif"), 20, 200, |_, _| {}).unwrap_err();
+    let e = film(5, 10.0)
+        .save(dir.join("tiny.gif"), 20, 200, |_, _| {})
+        .unwrap_err();
     assert!(matches!(e, PlotError::TooSmall { .. }), "{e}");
     for name in ["fast.gif", "empty.gif", "short.gif", "tiny.gif"] {
         assert!(!dir.join(name).exists(), "{name} left behind");

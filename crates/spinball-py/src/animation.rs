@@ -115,9 +115,8 @@ pub fn animate<'py>(
         .flat_map(|b| b.positions.iter().flat_map(|p| [p.x, p.y]))
         .collect();
     let shape_error = |e: numpy::ndarray::ShapeError| PyRuntimeError::new_err(e.to_string());
-    let per_frame = |values: Vec<f64>| {
-        Array2::from_shape_vec((n_balls, n_frames), values).map_err(shape_error)
-    };
+    let per_frame =
+        |values: Vec<f64>| Array2::from_shape_vec((n_balls, n_frames), values).map_err(shape_error);
     let angles = per_frame(frames.balls.iter().flat_map(|b| b.angles.clone()).collect())?;
     let spins = per_frame(frames.balls.iter().flat_map(|b| b.spins.clone()).collect())?;
     let times: Vec<f64> = (0..n_frames).map(|k| frames.time(k)).collect();

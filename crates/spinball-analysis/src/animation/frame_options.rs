@@ -186,8 +186,18 @@ mod tests {
             );
         }
         for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
-            assert!(FrameOptions::new(10.0, 1.0).with_speed(bad).validate().is_err());
-            assert!(FrameOptions::new(10.0, 1.0).with_radius(bad).validate().is_err());
+            assert!(
+                FrameOptions::new(10.0, 1.0)
+                    .with_speed(bad)
+                    .validate()
+                    .is_err()
+            );
+            assert!(
+                FrameOptions::new(10.0, 1.0)
+                    .with_radius(bad)
+                    .validate()
+                    .is_err()
+            );
         }
     }
 }

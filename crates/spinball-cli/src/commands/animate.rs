@@ -86,9 +86,11 @@ fn parse_size(s: &str) -> Result<(u32, u32), String> {
 /// [`CliError::Failed`] if a step fails or the film cannot be written.
 pub fn animate(args: &AnimateArgs) -> Result<(), CliError> {
     let (table, law) = args.scene.setup()?;
-    let format = FilmFormat::of_path(&args.output)
-        .map_err(|e| CliError::Usage(format!("--output: {e}")))?;
-    format.check(args.fps).map_err(|e| CliError::Usage(format!("--output {}: {e}", args.output.display())))?;
+    let format =
+        FilmFormat::of_path(&args.output).map_err(|e| CliError::Usage(format!("--output: {e}")))?;
+    format
+        .check(args.fps)
+        .map_err(|e| CliError::Usage(format!("--output {}: {e}", args.output.display())))?;
     check_outputs(None, &[("output", Some(args.output.as_path()))])?;
     let (starts, balls) = if args.start.is_empty() {
         let sampler = match args.sampler {
@@ -108,12 +110,11 @@ pub fn animate(args: &AnimateArgs) -> Result<(), CliError> {
         .clone()
         .unwrap_or_else(|| format!("{table}, α = {}", args.scene.alpha));
     let billiard = Billiard::new(table, law);
-    let frames = animation_frames(&billiard, &starts, balls, args.seed, &options).map_err(|e| {
-        match e {
+    let frames =
+        animation_frames(&billiard, &starts, balls, args.seed, &options).map_err(|e| match e {
             spinball_analysis::AnalysisError::Step { .. } => CliError::failed(e),
             e => CliError::usage(e),
-        }
-    })?;
+        })?;
     let film = frames.balls.iter().fold(
         Animation::new(billiard.table(), frames.fps, frames.radius).title(title),
         |film, ball| film.ball(ball.positions.iter().copied(), ball.angles.iter().copied()),
