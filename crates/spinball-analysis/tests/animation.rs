@@ -56,7 +56,7 @@ fn frames_lie_in_the_table_and_on_the_chords_between_collisions() {
             Table::Stadium(Stadium::new(1.0).unwrap()),
             Table::Sinai(Sinai::new(2.0, 1.0).unwrap()),
         ] {
-            let billiard = Billiard::new(table.clone(), SpinLaw::new(alpha).unwrap());
+            let billiard = Billiard::new(table, SpinLaw::new(alpha).unwrap());
             let frames =
                 animation_frames(&billiard, &Starts::Sampled(Sampler::Paper), 3, 7, &options)
                     .unwrap();
