@@ -5,6 +5,7 @@
 mod common;
 use common::{ok, scratch, spinball};
 
+use std::io::Write;
 use std::path::Path;
 
 /// Screen size, frame count and delays of a GIF (the `gif` crate's decoder).
@@ -172,6 +173,10 @@ fn bad_films_are_refused_before_the_run() {
             &with(&base, &["-o", mp4.to_str().unwrap()]),
             &["install ffmpeg", ".gif"],
         );
-        println!("skipped: ffmpeg is not on PATH, the MP4 film was not written");
+        // Straight to stderr, past the test harness's capture.
+        let _ = writeln!(
+            std::io::stderr(),
+            "bad_films_are_refused_before_the_run: MP4 part skipped, ffmpeg is not on PATH"
+        );
     }
 }
