@@ -157,4 +157,18 @@ fn an_mp4_is_written_where_ffmpeg_is_installed() {
     let bytes = std::fs::read(&path).unwrap();
     assert!(bytes.len() > 500, "{} bytes", bytes.len());
     assert_eq!(&bytes[4..8], b"ftyp", "an MP4 (ISO base media) file");
+    // ffprobe comes with ffmpeg: the frames, size (padded to even) and rate.
+    let probe = std::process::Command::new("ffprobe")
+        .args(["-v", "error", "-select_streams", "v:0", "-show_entries"])
+        .args([
+            "stream=width,height,nb_frames,r_frame_rate",
+            "-of",
+            "csv=p=0",
+        ])
+        .arg(&path)
+        .output();
+    if let Some(out) = probe.ok().filter(|o| o.status.success()) {
+        let said = String::from_utf8_lossy(&out.stdout);
+        assert_eq!(said.trim(), "242,162,10/1,10", "ffprobe: {said}");
+    }
 }
