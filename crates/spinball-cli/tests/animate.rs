@@ -36,7 +36,7 @@ fn refused(args: &[&str], words: &[&str]) {
 fn a_gif_of_drawn_balls_has_the_frames_size_and_delay_asked_for() {
     let dir = scratch("animate");
     let path = dir.join("stadium.gif");
-    let out = ok(&[
+    const FILM: [&str; 13] = [
         "animate",
         "--table",
         "stadium:a=1",
@@ -50,9 +50,8 @@ fn a_gif_of_drawn_balls_has_the_frames_size_and_delay_asked_for() {
         "1.5",
         "--size",
         "200x150",
-        "-o",
-        path.to_str().unwrap(),
-    ]);
+    ];
+    let out = ok(&[FILM.as_slice(), &["-o", path.to_str().unwrap()]].concat());
     let said = String::from_utf8_lossy(&out.stdout);
     assert!(
         said.contains("15 frames at 10 fps") && said.contains("3 balls"),
@@ -63,24 +62,7 @@ fn a_gif_of_drawn_balls_has_the_frames_size_and_delay_asked_for() {
     assert!(delays.iter().all(|&d| d == 10), "{delays:?}");
     // The same seed gives the same film, byte for byte.
     let again = dir.join("again.gif");
-    ok(&[
-        "animate",
-        "--table",
-        "stadium:a=1",
-        "--alpha",
-        "0.5",
-        "--balls",
-        "3",
-        "--fps",
-        "10",
-        "--duration",
-        "1.5",
-        "--size",
-        "200x150",
-        "--quiet",
-        "-o",
-        again.to_str().unwrap(),
-    ]);
+    ok(&[FILM.as_slice(), &["--quiet", "-o", again.to_str().unwrap()]].concat());
     assert_eq!(
         std::fs::read(&path).unwrap(),
         std::fs::read(&again).unwrap()
