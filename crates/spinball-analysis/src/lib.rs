@@ -45,6 +45,9 @@
 //! - [`diagnostics`]: the paper's checks of its mechanism: phase-space
 //!   separation, collision rate, wall transitions and |ΔQ|, curved share,
 //!   energy conservation, and the paper's published numbers.
+//! - [`animation`]: balls at the frame times of a film (positions, spin
+//!   angles, the exact collisions between frames), what the GIF and MP4
+//!   writers draw.
 //! - [`report`]: estimates as flat records
 //!   ([`SweepRow`](report::SweepRow)) for CSV and JSON.
 //!
@@ -60,12 +63,13 @@
 //! orbits
 //! phase_space   diagnostics
 //! precision
-//! run
+//! run           animation
 //! estimators
 //! ```
 //!
 //! `phase_space` and `diagnostics` sit side by side on `precision` and do
-//! not import each other; `orbits` builds on `phase_space`.
+//! not import each other; `orbits` builds on `phase_space`; `animation`
+//! needs only the initial conditions of `run`.
 //!
 //! ```
 //! use spinball_analysis::estimators::Method;
@@ -93,6 +97,7 @@
 #![cfg_attr(docsrs, feature(doc_cfg))]
 #![forbid(unsafe_code)]
 
+pub mod animation;
 pub mod diagnostics;
 pub mod escape;
 pub mod estimators;

@@ -2,7 +2,7 @@
 //!
 //! Lyapunov exponents over ensembles of initial conditions (`lyapunov`),
 //! their distribution (`ftle`), the full spectrum (`spectrum`), single
-//! trajectories (`trajectory`), tables (`table`), periodic orbits and
+//! trajectories (`trajectory`), films of them (`animate`), tables (`table`), periodic orbits and
 //! their stability (`orbits`), phase space (`section`, `ftle-map`, `kac`),
 //! and campaigns on a
 //! cluster: every ensemble command runs one shard with `--shard K/N`,
@@ -32,6 +32,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+use crate::commands::animate::{AnimateArgs, animate};
 use crate::commands::ftle::{FtleArgs, ftle};
 use crate::commands::ftle_map::{FtleMapArgs, ftle_map};
 use crate::commands::kac::{KacArgs, kac};
@@ -69,6 +70,9 @@ enum Command {
     Trajectory(Box<TrajectoryArgs>),
     /// Read a table (spec or file): describe it, validate it, draw it.
     Table(TableArgs),
+    /// A GIF (or MP4) of balls on a table, the spin shown by a rotating
+    /// marker, collisions exact in time.
+    Animate(Box<AnimateArgs>),
     /// Combine the partial results of a sharded run into the unsharded
     /// result (bitwise).
     #[command(mut_arg("json", |a| a.help(
@@ -108,6 +112,7 @@ fn main() -> ExitCode {
         Command::Spectrum(a) => spectrum(a),
         Command::Trajectory(a) => trajectory(a),
         Command::Table(a) => table(a),
+        Command::Animate(a) => animate(a),
         Command::Merge(a) => merge(a),
         Command::Slurm(a) => slurm(a),
         Command::Sweep(a) => sweep(a),

@@ -17,9 +17,9 @@ use crate::output::{write_npy, write_text};
 use crate::run_args::parse_threads;
 use crate::table_arg::read_table;
 
-/// One table at one α.
+/// One table at one α: what every command on a single scene takes.
 #[derive(Debug, Clone, Args)]
-pub struct PhaseArgs {
+pub struct SceneArgs {
     /// The table: a built-in spec (`stadium:a=1`, `sinai:L=2,R=1`, `circle`,
     /// `rectangle:L=1,H=1`) or a table file (`.toml` or `.json`).
     #[arg(long)]
@@ -30,6 +30,37 @@ pub struct PhaseArgs {
     /// Allow α > 1 (the mathematical extension of the law).
     #[arg(long)]
     pub extended: bool,
+}
+
+impl SceneArgs {
+    /// The table and the spin law.
+    ///
+    /// # Errors
+    /// [`CliError::Usage`] for a table or α that cannot work.
+    pub fn setup(&self) -> Result<(Built, SpinLaw), CliError> {
+        let table = read_table(&self.table)?;
+        let law = if self.extended {
+            SpinLaw::extended(self.alpha)
+        } else {
+            SpinLaw::new(self.alpha)
+        }
+        .map_err(|e| match e {
+            SpinLawError::Unphysical(_) => CliError::Usage(format!(
+                "--alpha {}: outside [0, 1]; pass --extended to allow it",
+                self.alpha
+            )),
+            e => CliError::Usage(format!("--alpha {}: {e}", self.alpha)),
+        })?;
+        Ok((table, law))
+    }
+}
+
+/// One table at one α, a seed and threads.
+#[derive(Debug, Clone, Args)]
+pub struct PhaseArgs {
+    /// The table and α.
+    #[command(flatten)]
+    pub scene: SceneArgs,
     /// Seed (of the starts, or of the tangent directions of a map).
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
@@ -45,19 +76,7 @@ impl PhaseArgs {
     /// # Errors
     /// [`CliError::Usage`] for a table or α that cannot work.
     pub fn setup(&self) -> Result<(Built, SpinLaw, Threads), CliError> {
-        let table = read_table(&self.table)?;
-        let law = if self.extended {
-            SpinLaw::extended(self.alpha)
-        } else {
-            SpinLaw::new(self.alpha)
-        }
-        .map_err(|e| match e {
-            SpinLawError::Unphysical(_) => CliError::Usage(format!(
-                "--alpha {}: outside [0, 1]; pass --extended to allow it",
-                self.alpha
-            )),
-            e => CliError::Usage(format!("--alpha {}: {e}", self.alpha)),
-        })?;
+        let (table, law) = self.scene.setup()?;
         let threads = self.threads.map_or(Threads::All, Threads::Fixed);
         Ok((table, law, threads))
     }

@@ -27,14 +27,19 @@ pub fn stop_flag() -> Arc<AtomicBool> {
 /// A progress bar on stderr if it is a terminal and not `quiet`, else
 /// nothing.
 pub fn progress_bar(quiet: bool) -> ProgressBar {
+    progress_bar_counting(quiet, "ICs")
+}
+
+/// [`progress_bar`] counting `unit` ("ICs", "frames").
+pub fn progress_bar_counting(quiet: bool, unit: &str) -> ProgressBar {
     if quiet || !std::io::stderr().is_terminal() {
         return ProgressBar::hidden();
     }
     let bar = ProgressBar::new(0);
     bar.set_style(
-        ProgressStyle::with_template(
-            "{prefix} [{bar:30}] {pos}/{len} ICs {msg} ({elapsed}, ~{eta} left)",
-        )
+        ProgressStyle::with_template(&format!(
+            "{{prefix}} [{{bar:30}}] {{pos}}/{{len}} {unit} {{msg}} ({{elapsed}}, ~{{eta}} left)"
+        ))
         .expect("the template is valid")
         .progress_chars("=> "),
     );

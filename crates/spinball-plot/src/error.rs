@@ -64,6 +64,19 @@ pub enum PlotError {
         #[source]
         source: std::io::Error,
     },
+    /// An MP4 was asked for but `ffmpeg` is not on `PATH`.
+    #[error(
+        "writing an MP4 needs ffmpeg, which is not on PATH: install ffmpeg (for example `apt-get install ffmpeg`), or write a .gif"
+    )]
+    FfmpegMissing,
+    /// A film could not be encoded (the GIF encoder or `ffmpeg` failed).
+    #[error("cannot encode {path}: {why}")]
+    Encoding {
+        /// The film being written.
+        path: PathBuf,
+        /// What the encoder said.
+        why: String,
+    },
     /// The drawing backend failed (includes PNG encoding errors).
     #[error("drawing failed: {0}")]
     Drawing(String),

@@ -1,7 +1,8 @@
 //! Plots for [spinball](https://docs.rs/spinball): the pictures a physicist
 //! puts in a talk, drawn to PNG with a bundled font and no system libraries.
 //!
-//! The crate is small on purpose. It draws five things, each a [`Plot`]:
+//! The crate is small on purpose. It draws these things, each a [`Plot`]
+//! (but the film, which has its own `save`):
 //! - [`TablePlot`]: a table outline (any built-in [`Table`] or a
 //!   [`SegmentTable`]), optionally with a trajectory coloured from early to
 //!   late by the [`viridis`] colormap;
@@ -13,6 +14,9 @@
 //! - [`MapPlot`] and [`Scatter3d`]: phase space, a value per grid cell (an
 //!   FTLE map) or per point (a section coloured by spin) with outlined
 //!   regions, and a 3-D cloud of section points;
+//! - [`Animation`]: balls moving on a table, each with a rotating spin
+//!   marker, written as an animated GIF (or an MP4 where `ffmpeg` is
+//!   installed);
 //! - [`Grid`]: panels side by side (for example 4 tables × 4 values of α),
 //!   with an optional shared [`Colorbar`].
 //!
@@ -57,25 +61,31 @@
 //! fontconfig, freetype or other system library is needed.
 #![forbid(unsafe_code)]
 
+mod animation;
 mod colormap;
 mod error;
+mod fixed_palette;
 pub mod font;
 mod format;
+mod gif_writer;
 mod grid;
 mod histogram;
 mod lines;
+mod mp4_writer;
 mod outline;
 mod phase_plot;
 mod plot;
 mod style;
 mod table_plot;
 
+pub use animation::{Animation, DEFAULT_FILM_SIZE, FilmFormat, MAX_GIF_FPS};
 pub use colormap::{PALETTE, palette, viridis};
 pub use error::PlotError;
 pub use format::{format_tick, format_tick_on, snap_tick};
 pub use grid::{Colorbar, Grid, Panel};
 pub use histogram::{HistogramPlot, Marker};
 pub use lines::{Legend, LineKind, LinePlot, Series};
+pub use mp4_writer::FFMPEG;
 pub use outline::{ARC_POINTS_PER_TURN, Loop, Outline, ToOutline};
 pub use phase_plot::{MapPlot, Scatter3d};
 pub use plot::{Plot, render_png};

@@ -13,9 +13,9 @@ use crate::plot::{Plot, inner_size, titled};
 use crate::style::Style;
 
 /// Fill of the table's interior.
-const TABLE_FILL: RGBColor = RGBColor(0xF4, 0xF5, 0xF8);
+pub(crate) const TABLE_FILL: RGBColor = RGBColor(0xF4, 0xF5, 0xF8);
 /// Fill of obstacles (holes).
-const OBSTACLE_FILL: RGBColor = RGBColor(0xC8, 0xCB, 0xD2);
+pub(crate) const OBSTACLE_FILL: RGBColor = RGBColor(0xC8, 0xCB, 0xD2);
 
 /// A table drawn to scale (equal aspect), with an optional trajectory.
 ///
@@ -104,59 +104,9 @@ impl Plot for TablePlot {
         self.validate()?;
         font::ensure()?;
         let area = titled(area, self.title.as_deref(), style.title_px)?;
-        let (mut lo, mut hi) = self
-            .outline
-            .bounds()
-            .ok_or_else(|| PlotError::EmptyData("table outline".into()))?;
-        for p in self.trajectory.iter().flatten().filter(|p| p.is_finite()) {
-            lo = lo.min(*p);
-            hi = hi.max(*p);
-        }
-        let pad = 0.03 * (hi - lo).max_element().max(f64::MIN_POSITIVE);
-        let (lo, hi) = (lo - pad, hi + pad);
-        let (left, bottom) = if self.axes {
-            (style.y_label_area(4), style.x_label_area())
-        } else {
-            (0, 0)
-        };
-        let margin = style.margin / 2;
-        let (pw, ph) = inner_size(&area, margin, left, bottom)?;
-        // Equal aspect: one length unit is the same number of pixels on both axes.
-        let scale = (pw as f64 / (hi.x - lo.x)).min(ph as f64 / (hi.y - lo.y));
-        let c = 0.5 * (lo + hi);
-        let half = 0.5 * DVec2::new(pw as f64, ph as f64) / scale;
-        let mut chart = ChartBuilder::on(&area)
-            .margin(margin)
-            .x_label_area_size(bottom)
-            .y_label_area_size(left)
-            .build_cartesian_2d(c.x - half.x..c.x + half.x, c.y - half.y..c.y + half.y)?;
-        if self.axes {
-            let tick = (font::FAMILY, style.tick_px).into_font();
-            chart
-                .configure_mesh()
-                .disable_mesh()
-                .x_desc("x")
-                .y_desc("y")
-                .label_style(tick)
-                .axis_desc_style((font::FAMILY, style.label_px).into_font())
-                .x_label_formatter(&|v| format_tick_on(*v, 2.0 * half.x))
-                .y_label_formatter(&|v| format_tick_on(*v, 2.0 * half.y))
-                .axis_style(BLACK.stroke_width(1))
-                .draw()?;
-        }
+        let also = self.trajectory.iter().flatten().copied();
+        let mut chart = table_chart(&area, &self.outline, also, self.axes, style)?;
         let xy = |p: &DVec2| (p.x, p.y);
-        for lp in self.outline.loops().iter().filter(|l| !l.is_hole()) {
-            chart.draw_series(std::iter::once(Polygon::new(
-                lp.points().iter().map(xy).collect::<Vec<_>>(),
-                TABLE_FILL.filled(),
-            )))?;
-        }
-        for lp in self.outline.loops().iter().filter(|l| l.is_hole()) {
-            chart.draw_series(std::iter::once(Polygon::new(
-                lp.points().iter().map(xy).collect::<Vec<_>>(),
-                OBSTACLE_FILL.filled(),
-            )))?;
-        }
         if let Some(path) = &self.trajectory {
             let legs = path.len().saturating_sub(1);
             let denom = legs.saturating_sub(1).max(1) as f64;
@@ -173,12 +123,7 @@ impl Plot for TablePlot {
                     }),
             )?;
         }
-        for lp in self.outline.loops() {
-            chart.draw_series(std::iter::once(PathElement::new(
-                lp.points().iter().map(xy).collect::<Vec<_>>(),
-                BLACK.stroke_width(style.line_width.max(2)),
-            )))?;
-        }
+        draw_walls(&mut chart, &self.outline, style)?;
         if let Some(start) = self.trajectory.iter().flatten().find(|p| p.is_finite()) {
             let r = style.marker_radius;
             chart.draw_series(std::iter::once(Circle::new(
@@ -190,4 +135,92 @@ impl Plot for TablePlot {
         }
         Ok(())
     }
+}
+
+/// The chart of a table drawn to scale: equal aspect, framing the outline
+/// and the finite points of `also`, with axes if asked, the interior and the
+/// obstacles filled (the walls are drawn by [`draw_walls`], after whatever
+/// goes on the table).
+pub(crate) fn table_chart<'a, DB: DrawingBackend>(
+    area: &'a DrawingArea<DB, Shift>,
+    outline: &Outline,
+    also: impl Iterator<Item = DVec2>,
+    axes: bool,
+    style: &Style,
+) -> Result<TableChart<'a, DB>, PlotError> {
+    let (mut lo, mut hi) = outline
+        .bounds()
+        .ok_or_else(|| PlotError::EmptyData("table outline".into()))?;
+    for p in also.filter(|p| p.is_finite()) {
+        lo = lo.min(p);
+        hi = hi.max(p);
+    }
+    let pad = 0.03 * (hi - lo).max_element().max(f64::MIN_POSITIVE);
+    let (lo, hi) = (lo - pad, hi + pad);
+    let (left, bottom) = if axes {
+        (style.y_label_area(4), style.x_label_area())
+    } else {
+        (0, 0)
+    };
+    let margin = style.margin / 2;
+    let (pw, ph) = inner_size(area, margin, left, bottom)?;
+    // Equal aspect: one length unit is the same number of pixels on both axes.
+    let scale = (pw as f64 / (hi.x - lo.x)).min(ph as f64 / (hi.y - lo.y));
+    let c = 0.5 * (lo + hi);
+    let half = 0.5 * DVec2::new(pw as f64, ph as f64) / scale;
+    let mut chart = ChartBuilder::on(area)
+        .margin(margin)
+        .x_label_area_size(bottom)
+        .y_label_area_size(left)
+        .build_cartesian_2d(c.x - half.x..c.x + half.x, c.y - half.y..c.y + half.y)?;
+    if axes {
+        let tick = (font::FAMILY, style.tick_px).into_font();
+        chart
+            .configure_mesh()
+            .disable_mesh()
+            .x_desc("x")
+            .y_desc("y")
+            .label_style(tick)
+            .axis_desc_style((font::FAMILY, style.label_px).into_font())
+            .x_label_formatter(&|v| format_tick_on(*v, 2.0 * half.x))
+            .y_label_formatter(&|v| format_tick_on(*v, 2.0 * half.y))
+            .axis_style(BLACK.stroke_width(1))
+            .draw()?;
+    }
+    let xy = |p: &DVec2| (p.x, p.y);
+    for lp in outline.loops().iter().filter(|l| !l.is_hole()) {
+        chart.draw_series(std::iter::once(Polygon::new(
+            lp.points().iter().map(xy).collect::<Vec<_>>(),
+            TABLE_FILL.filled(),
+        )))?;
+    }
+    for lp in outline.loops().iter().filter(|l| l.is_hole()) {
+        chart.draw_series(std::iter::once(Polygon::new(
+            lp.points().iter().map(xy).collect::<Vec<_>>(),
+            OBSTACLE_FILL.filled(),
+        )))?;
+    }
+    Ok(chart)
+}
+
+/// A chart in table coordinates.
+pub(crate) type TableChart<'a, DB> = ChartContext<
+    'a,
+    DB,
+    Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+>;
+
+/// The walls of `outline`, in black, on top of what the chart holds.
+pub(crate) fn draw_walls<DB: DrawingBackend>(
+    chart: &mut TableChart<'_, DB>,
+    outline: &Outline,
+    style: &Style,
+) -> Result<(), PlotError> {
+    for lp in outline.loops() {
+        chart.draw_series(std::iter::once(PathElement::new(
+            lp.points().iter().map(|p| (p.x, p.y)).collect::<Vec<_>>(),
+            BLACK.stroke_width(style.line_width.max(2)),
+        )))?;
+    }
+    Ok(())
 }

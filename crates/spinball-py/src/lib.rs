@@ -22,6 +22,7 @@
 
 use pyo3::prelude::*;
 
+pub mod animation;
 pub mod args;
 pub mod billiard;
 pub mod errors;
@@ -71,6 +72,7 @@ fn _spinball(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(runs::spectrum, m)?)?;
     m.add_function(wrap_pyfunction!(orbits::periodic_orbits, m)?)?;
     m.add_function(wrap_pyfunction!(orbits::island_sizes, m)?)?;
+    m.add_function(wrap_pyfunction!(animation::animate, m)?)?;
     phase_space::register(m)?;
     Ok(())
 }

@@ -1,6 +1,7 @@
 //! One module per subcommand; each parses nothing itself beyond its
 //! arguments and calls the library.
 
+pub mod animate;
 pub mod ftle;
 pub mod ftle_map;
 pub mod kac;

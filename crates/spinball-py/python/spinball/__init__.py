@@ -11,7 +11,9 @@ number; and phase space as NumPy arrays: Birkhoff sections (``section``),
 FTLE maps at fixed spin or fixed Q with the predicted bouncing-ball island
 (``ftle_map``), return times against Kac's lemma (``kac``), starts drawn
 from the invariant measure of the collision map (``invariant_states``) and
-the bouncing-ball prediction (``bouncing_ball``, ``pair_rotation``). Exponents are per unit time at energy ½ (the paper's units: J. S.
+the bouncing-ball prediction (``bouncing_ball``, ``pair_rotation``); and
+films of balls on a table with their spin (``animate``, a GIF or MP4).
+Exponents are per unit time at energy ½ (the paper's units: J. S.
 Lund, J. Murugan, J. P. Shock, *Spinning Billiards and Chaos*,
 arXiv:2505.15335).
 
@@ -49,6 +51,7 @@ from ._spinball import (
     Trajectory,
     __version__,
     alpha_sweep,
+    animate,
     bouncing_ball,
     ftle_map,
     invariant_states,
@@ -86,6 +89,7 @@ __all__ = [
     "Trajectory",
     "__version__",
     "alpha_sweep",
+    "animate",
     "bouncing_ball",
     "ftle_map",
     "invariant_states",
