@@ -64,7 +64,6 @@ mod format;
 mod grid;
 mod histogram;
 mod lines;
-mod outline;
 mod phase_plot;
 mod plot;
 mod style;
@@ -76,7 +75,6 @@ pub use format::{format_tick, format_tick_on, snap_tick};
 pub use grid::{Colorbar, Grid, Panel};
 pub use histogram::{HistogramPlot, Marker};
 pub use lines::{Legend, LineKind, LinePlot, Series};
-pub use outline::{ARC_POINTS_PER_TURN, Loop, Outline, ToOutline};
 pub use phase_plot::{MapPlot, Scatter3d};
 pub use plot::{Plot, render_png};
 pub use style::Style;
@@ -84,4 +82,6 @@ pub use table_plot::TablePlot;
 
 pub use plotters;
 pub use plotters::style::RGBColor;
-pub use spinball_geometry::{DVec2, SegmentTable, Table};
+pub use spinball_geometry::{
+    ARC_POINTS_PER_TURN, DVec2, Loop, Outline, SegmentTable, Table, ToOutline,
+};

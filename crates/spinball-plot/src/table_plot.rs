@@ -8,9 +8,9 @@ use crate::colormap::viridis;
 use crate::error::PlotError;
 use crate::font;
 use crate::format::format_tick_on;
-use crate::outline::{Outline, ToOutline};
 use crate::plot::{Plot, inner_size, titled};
 use crate::style::Style;
+use spinball_geometry::{Outline, ToOutline};
 
 /// Fill of the table's interior.
 const TABLE_FILL: RGBColor = RGBColor(0xF4, 0xF5, 0xF8);
