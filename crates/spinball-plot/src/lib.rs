@@ -59,6 +59,7 @@
 
 mod colormap;
 mod error;
+mod error_bar;
 pub mod font;
 mod format;
 mod grid;
@@ -71,6 +72,7 @@ mod table_plot;
 
 pub use colormap::{PALETTE, palette, viridis};
 pub use error::PlotError;
+pub use error_bar::{CAP_OVERHANG, ErrorBarPixels, bar_shade};
 pub use format::{format_tick, format_tick_on, snap_tick};
 pub use grid::{Colorbar, Grid, Panel};
 pub use histogram::{HistogramPlot, Marker};
