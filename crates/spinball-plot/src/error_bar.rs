@@ -107,7 +107,11 @@ mod tests {
     #[test]
     fn a_bar_shorter_than_the_marker_keeps_caps_beyond_it() {
         let b = ErrorBarPixels::new(300, 302, 298, 6);
-        assert_eq!((b.top, b.bottom), (-2, 2), "order of the rows does not matter");
+        assert_eq!(
+            (b.top, b.bottom),
+            (-2, 2),
+            "order of the rows does not matter"
+        );
         assert!(b.inside_marker(6));
         // The caps stick out CAP_OVERHANG pixels on each side of the marker.
         assert!(b.cap_half > 6);
@@ -138,9 +142,7 @@ mod tests {
             let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
             root.fill(&WHITE).unwrap();
             LinePlot::new()
-                .series(
-                    Series::new("λ", [(0.0, 1.0), (0.5, 2.0), (1.0, 3.0)]).errors([1e-9; 3]),
-                )
+                .series(Series::new("λ", [(0.0, 1.0), (0.5, 2.0), (1.0, 3.0)]).errors([1e-9; 3]))
                 .draw(&root, &style)
                 .unwrap();
             root.present().unwrap();

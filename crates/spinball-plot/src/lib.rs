@@ -69,8 +69,9 @@ mod phase_plot;
 mod plot;
 mod style;
 mod table_plot;
+mod x_band;
 
-pub use colormap::{PALETTE, palette, viridis};
+pub use colormap::{PALETTE, palette, value_range, viridis};
 pub use error::PlotError;
 pub use error_bar::{CAP_OVERHANG, ErrorBarPixels, bar_shade};
 pub use format::{format_tick, format_tick_on, snap_tick};
@@ -81,6 +82,7 @@ pub use phase_plot::{MapPlot, Scatter3d};
 pub use plot::{Plot, render_png};
 pub use style::Style;
 pub use table_plot::TablePlot;
+pub use x_band::XBand;
 
 pub use plotters;
 pub use plotters::style::RGBColor;

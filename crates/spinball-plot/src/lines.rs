@@ -7,8 +7,8 @@ use plotters::element::IntoDynElement;
 use plotters::prelude::*;
 
 use crate::colormap::palette;
-use crate::error_bar::{ErrorBarPixels, bar_shade, draw_error_bars};
 use crate::error::PlotError;
+use crate::error_bar::{ErrorBarPixels, bar_shade, draw_error_bars};
 use crate::font;
 use crate::format::{format_tick, snap_tick, superscript};
 use crate::plot::{Plot, inner_size, titled};
