@@ -10,7 +10,7 @@ use spinball_analysis::run::LyapunovEstimate;
 use spinball_geometry::{Boundary, DVec2, ToOutline};
 use spinball_plot::{
     Colorbar, Grid, HistogramPlot, LineKind, LinePlot, MapPlot, Marker, Plot, Series, TablePlot,
-    XBand, value_range,
+    XBand, two_digits, value_range,
 };
 
 use crate::error::CliError;
@@ -41,19 +41,6 @@ pub fn check_png(path: &Path) -> Result<(), CliError> {
 fn save(plot: &impl Plot, path: &Path) -> Result<(), CliError> {
     plot.save_png(path, PNG_SIZE.0, PNG_SIZE.1)
         .map_err(|e| CliError::Failed(format!("--png {}: {e}", path.display())))
-}
-
-/// `x` to two significant digits, as a number reads in a legend.
-fn two_digits(x: f64) -> String {
-    if x == 0.0 || !x.is_finite() {
-        return format!("{x}");
-    }
-    let e = x.abs().log10().floor() as i32;
-    if (-3..4).contains(&e) {
-        format!("{:.*}", (1 - e).max(0) as usize, x)
-    } else {
-        format!("{x:.1e}")
-    }
 }
 
 /// λ(α) with its standard errors, one point per estimate; the legend says
@@ -198,18 +185,4 @@ pub fn ftle_map_png(
         plot = plot.outline(mask.to_vec());
     }
     save(&with_colorbar(plot, "FTLE λ (1/time)", range), path)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn legend_numbers_have_two_digits() {
-        assert_eq!(two_digits(0.000_312), "0.00031");
-        assert_eq!(two_digits(0.0123), "0.012");
-        assert_eq!(two_digits(1.234), "1.2");
-        assert_eq!(two_digits(0.0), "0");
-        assert_eq!(two_digits(3.1e-6), "3.1e-6");
-    }
 }

@@ -74,7 +74,7 @@ mod x_band;
 pub use colormap::{PALETTE, palette, value_range, viridis};
 pub use error::PlotError;
 pub use error_bar::{CAP_OVERHANG, ErrorBarPixels, bar_shade};
-pub use format::{format_tick, format_tick_on, snap_tick};
+pub use format::{format_tick, format_tick_on, snap_tick, two_digits};
 pub use grid::{Colorbar, Grid, Panel};
 pub use histogram::{HistogramPlot, Marker};
 pub use lines::{Legend, LineKind, LinePlot, Series};

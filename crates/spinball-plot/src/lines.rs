@@ -10,7 +10,7 @@ use crate::colormap::palette;
 use crate::error::PlotError;
 use crate::error_bar::{ErrorBarPixels, bar_shade, draw_error_bars};
 use crate::font;
-use crate::format::{format_tick, snap_tick, superscript};
+use crate::format::{format_tick, snap_tick, superscript, two_digits};
 use crate::plot::{Plot, inner_size, titled};
 use crate::style::Style;
 
@@ -740,19 +740,6 @@ pub(crate) fn log_label_count(lo: f64, hi: f64) -> usize {
         (span.floor() as usize + 1).min(9)
     } else {
         9
-    }
-}
-
-/// `x > 0` to two significant digits: `0.32`, `3.2`, `320`, `3.2×10⁴`.
-fn two_digits(x: f64) -> String {
-    let e = x.log10().floor() as i32;
-    if (-3..4).contains(&e) {
-        let decimals = (1 - e).max(0) as usize;
-        let r = 10f64.powi(e - 1);
-        format!("{:.decimals$}", (x / r).round() * r)
-    } else {
-        let m = x / 10f64.powi(e);
-        format!("{m:.1}×10{}", superscript(e))
     }
 }
 
