@@ -52,7 +52,7 @@ pub fn format_tick_on(v: f64, span: f64) -> String {
 }
 
 /// `x` to two significant digits, as a legend or a log-axis tick shows a
-/// number: `0.32`, `3.2`, `320`, `3.2×10⁴`, `-0.0012`; zero is `0` and a
+/// number: `0.32`, `3.2`, `320`, `3.2×10⁴`, `-0.0012`, `3.1×10⁻⁴`; zero is `0` and a
 /// non-finite `x` is empty.
 #[must_use]
 pub fn two_digits(x: f64) -> String {
@@ -111,7 +111,8 @@ mod tests {
 
     #[test]
     fn two_significant_digits() {
-        assert_eq!(two_digits(0.000_312), "0.00031");
+        assert_eq!(two_digits(0.003_12), "0.0031");
+        assert_eq!(two_digits(0.000_312), "3.1×10⁻⁴");
         assert_eq!(two_digits(0.0123), "0.012");
         assert_eq!(two_digits(1.234), "1.2");
         assert_eq!(two_digits(320.0), "320");

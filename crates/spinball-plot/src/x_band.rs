@@ -20,10 +20,12 @@ const BAND: RGBColor = RGBColor(0xE6, 0x9F, 0x00);
 impl XBand {
     /// A band over `[lo, hi]` (either order) labelled `label`.
     pub fn new(label: impl Into<String>, lo: f64, hi: f64) -> Self {
+        // A NaN end stays (and hides the band), where min/max would drop it.
+        let (lo, hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
         XBand {
             label: label.into(),
-            lo: lo.min(hi),
-            hi: lo.max(hi),
+            lo,
+            hi,
             color: BAND,
         }
     }
