@@ -35,45 +35,37 @@ fn assert_picture(path: &Path, colours: usize) {
     );
 }
 
+/// `command --table stadium:a=1 --alpha ALPHA` then `rest`.
+fn run(command: &str, alpha: &str, rest: &[&str]) -> Vec<String> {
+    [command, "--table", "stadium:a=1", "--alpha", alpha]
+        .iter()
+        .chain(rest)
+        .map(|s| (*s).to_string())
+        .collect()
+}
+
+/// Run `args` with `--png path` added, and check it succeeded.
+fn draw(mut args: Vec<String>, path: &Path) -> std::process::Output {
+    args.extend(["--png".to_string(), path.display().to_string()]);
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    ok(&args)
+}
+
 #[test]
 fn lyapunov_draws_lambda_of_alpha() {
-    let dir = scratch("png-lyapunov");
-    let png = dir.join("lambda.png");
-    ok(&[
-        "lyapunov",
-        "--table",
-        "stadium:a=1",
-        "--alpha",
-        "0,0.5,1",
-        "--ics",
-        "8",
-        "--collisions",
-        "300",
-        "--quiet",
-        "--png",
-        png.to_str().unwrap(),
-    ]);
+    let png = scratch("png-lyapunov").join("lambda.png");
+    let rest = ["--ics", "8", "--collisions", "300", "--quiet"];
+    draw(run("lyapunov", "0,0.5,1", &rest), &png);
     assert_picture(&png, 8);
 }
 
 #[test]
 fn ftle_draws_one_histogram_per_alpha() {
     let dir = scratch("png-ftle");
-    let png = dir.join("h.png");
-    ok(&[
-        "ftle",
-        "--table",
-        "sinai:L=2,R=1",
-        "--alpha",
-        "0,0.5",
-        "--ics",
-        "16",
-        "--collisions",
-        "300",
-        "--quiet",
-        "--png",
-        png.to_str().unwrap(),
-    ]);
+    let mut args = run("ftle", "0,0.5", &["--ics", "16", "--collisions", "300"]);
+    args[2] = "sinai:L=2,R=1".into();
+    args.push("--quiet".into());
+    draw(args, &dir.join("h.png"));
     for name in ["h.alpha-0.png", "h.alpha-0.5.png"] {
         assert_picture(&dir.join(name), 8);
     }
@@ -81,19 +73,8 @@ fn ftle_draws_one_histogram_per_alpha() {
 
 #[test]
 fn trajectory_draws_the_path_coloured_by_spin() {
-    let dir = scratch("png-trajectory");
-    let png = dir.join("t.png");
-    let out = ok(&[
-        "trajectory",
-        "--table",
-        "stadium:a=1",
-        "--alpha",
-        "0.5",
-        "--collisions",
-        "60",
-        "--png",
-        png.to_str().unwrap(),
-    ]);
+    let png = scratch("png-trajectory").join("t.png");
+    let out = draw(run("trajectory", "0.5", &["--collisions", "60"]), &png);
     assert!(out.stdout.is_empty(), "--png alone prints no CSV");
     // Viridis legs and the colour bar: many colours.
     assert_picture(&png, 30);
@@ -101,35 +82,16 @@ fn trajectory_draws_the_path_coloured_by_spin() {
 
 #[test]
 fn section_draws_points_coloured_by_spin() {
-    let dir = scratch("png-section");
-    let png = dir.join("s.png");
-    ok(&[
-        "section",
-        "--table",
-        "stadium:a=1",
-        "--alpha",
-        "0.5",
-        "--orbits",
-        "4",
-        "--collisions",
-        "200",
-        "--quiet",
-        "--png",
-        png.to_str().unwrap(),
-    ]);
+    let png = scratch("png-section").join("s.png");
+    let rest = ["--orbits", "4", "--collisions", "200", "--quiet"];
+    draw(run("section", "0.5", &rest), &png);
     assert_picture(&png, 30);
 }
 
 #[test]
 fn ftle_map_draws_an_image() {
-    let dir = scratch("png-map");
-    let png = dir.join("m.png");
-    ok(&[
-        "ftle-map",
-        "--table",
-        "stadium:a=1",
-        "--alpha",
-        "0.5",
+    let png = scratch("png-map").join("m.png");
+    let rest = [
         "--columns",
         "12",
         "--rows",
@@ -137,85 +99,30 @@ fn ftle_map_draws_an_image() {
         "--collisions",
         "100",
         "--quiet",
-        "--png",
-        png.to_str().unwrap(),
-    ]);
+    ];
+    draw(run("ftle-map", "0.5", &rest), &png);
     assert_picture(&png, 30);
 }
 
 #[test]
 fn an_unwritable_png_is_refused_before_the_run() {
     let dir = scratch("png-refused");
-    let missing = dir.join("no-such-dir").join("x.png");
-    let m = missing.to_str().unwrap();
-    let runs: [&[&str]; 4] = [
-        &[
-            "lyapunov",
-            "--table",
-            "stadium:a=1",
-            "--alpha",
-            "0.5",
-            "--png",
-            m,
-        ],
-        &[
-            "trajectory",
-            "--table",
-            "stadium:a=1",
-            "--alpha",
-            "0.5",
-            "--png",
-            m,
-        ],
-        &[
-            "section",
-            "--table",
-            "stadium:a=1",
-            "--alpha",
-            "0.5",
-            "--png",
-            m,
-        ],
-        &[
-            "ftle-map",
-            "--table",
-            "stadium:a=1",
-            "--alpha",
-            "0.5",
-            "--png",
-            m,
-        ],
-    ];
-    for args in runs {
-        let out = spinball(args);
+    let refused = |command: &str, png: &Path, why: &str| {
+        let mut args = run(command, "0.5", &["--png"]);
+        args.push(png.display().to_string());
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let out = spinball(&args);
         let err = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
-        assert!(
-            err.contains("--png") && err.contains("does not exist"),
-            "{err}"
-        );
+        assert!(err.contains("--png") && err.contains(why), "{err}");
+    };
+    let missing = dir.join("no-such-dir").join("x.png");
+    for command in ["lyapunov", "ftle", "trajectory", "section", "ftle-map"] {
+        refused(command, &missing, "does not exist");
     }
-    // A directory in the way is refused too.
-    let out = spinball(&[
-        "ftle",
-        "--table",
-        "stadium:a=1",
-        "--alpha",
-        "0.5",
-        "--png",
-        dir.to_str().unwrap(),
-    ]);
-    assert_eq!(out.status.code(), Some(2));
-    // So is a name that is not a PNG's.
-    let out = spinball(&[
-        "section",
-        "--table",
-        "stadium:a=1",
-        "--alpha",
-        "0.5",
-        "--png",
-        dir.join("s.jpg").to_str().unwrap(),
-    ]);
-    assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("must end in .png"));
+    // A directory in the way, and a name that is not a PNG's.
+    let in_the_way = dir.join("d.png");
+    std::fs::create_dir(&in_the_way).unwrap();
+    refused("ftle", &in_the_way, "is a directory");
+    refused("section", &dir.join("s.jpg"), "must end in .png");
 }
