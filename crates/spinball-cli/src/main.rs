@@ -22,6 +22,7 @@ mod estimator_args;
 mod files;
 mod output;
 mod phase_args;
+mod pictures;
 mod run_args;
 mod stdout;
 mod table_arg;

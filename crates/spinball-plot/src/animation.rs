@@ -17,7 +17,7 @@ use crate::error::PlotError;
 use crate::font;
 use crate::gif_writer::GifWriter;
 use crate::mp4_writer::Mp4Writer;
-use crate::outline::{Outline, ToOutline};
+use spinball_geometry::{Outline, ToOutline};
 use crate::plot::{MAX_SIDE, MIN_SIDE, titled};
 use crate::style::Style;
 use crate::table_plot::{draw_walls, table_chart};

@@ -3,6 +3,8 @@
 
 use plotters::style::RGBColor;
 
+use crate::lines::pad;
+
 /// The viridis colormap (van der Walt & Smith, matplotlib's default) at ten
 /// evenly spaced stops, `t = 0, 1/9, …, 1`; values in between are linear
 /// interpolations in sRGB.
@@ -33,6 +35,25 @@ pub fn viridis(t: f64) -> RGBColor {
     let (a, b) = (VIRIDIS[i], VIRIDIS[i + 1]);
     let mix = |p: u8, q: u8| (p as f64 + f * (q as f64 - p as f64)).round() as u8;
     RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
+/// The range a colour scale of `values` spans: their finite minimum and
+/// maximum, widened a little around a single value (so that a constant
+/// quantity, such as the spin at α = 0, still gets a scale). `None` if no
+/// value is finite.
+#[must_use]
+pub fn value_range(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
+    let (lo, hi) = values
+        .into_iter()
+        .filter(|v| v.is_finite())
+        .fold(None, |acc: Option<(f64, f64)>, v| {
+            Some(acc.map_or((v, v), |(a, b)| (a.min(v), b.max(v))))
+        })?;
+    Some(if hi > lo {
+        (lo, hi)
+    } else {
+        pad((lo, hi), false)
+    })
 }
 
 /// The categorical palette: Okabe & Ito's colour-blind-safe colours, ordered
@@ -77,6 +98,14 @@ mod tests {
             assert!(l >= last, "luminance falls at t = {}", i as f64 / 100.0);
             last = l;
         }
+    }
+
+    #[test]
+    fn value_ranges_are_never_empty() {
+        assert_eq!(value_range([0.2, f64::NAN, -0.4]), Some((-0.4, 0.2)));
+        let (lo, hi) = value_range([0.0, 0.0]).unwrap();
+        assert!(lo < 0.0 && hi > 0.0);
+        assert_eq!(value_range([f64::NAN]), None);
     }
 
     #[test]

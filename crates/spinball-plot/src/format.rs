@@ -51,6 +51,34 @@ pub fn format_tick_on(v: f64, span: f64) -> String {
     format_tick(snap_tick(v, span))
 }
 
+/// `x` to two significant digits, as a legend or a log-axis tick shows a
+/// number: `0.32`, `3.2`, `320`, `3.2×10⁴`, `-0.0012`, `3.1×10⁻⁴`; zero is `0` and a
+/// non-finite `x` is empty.
+#[must_use]
+pub fn two_digits(x: f64) -> String {
+    if x == 0.0 {
+        return "0".to_string();
+    }
+    if !x.is_finite() {
+        return String::new();
+    }
+    let sign = if x < 0.0 { "-" } else { "" };
+    let x = x.abs();
+    let mut e = x.log10().floor() as i32;
+    // Rounding to two digits can carry into the next decade (9.96 → 10).
+    if (x / 10f64.powi(e - 1)).round() >= 100.0 {
+        e += 1;
+    }
+    if (-3..4).contains(&e) {
+        let decimals = (1 - e).max(0) as usize;
+        let r = 10f64.powi(e - 1);
+        format!("{sign}{:.decimals$}", (x / r).round() * r)
+    } else {
+        let m = x / 10f64.powi(e);
+        format!("{sign}{m:.1}×10{}", superscript(e))
+    }
+}
+
 /// `n` in superscript digits (`−15` → `⁻¹⁵`).
 pub(crate) fn superscript(n: i32) -> String {
     const DIGITS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
@@ -79,6 +107,20 @@ mod tests {
         assert_eq!(format_tick(1e6), "10⁶");
         assert_eq!(format_tick(2.5e6), "2.5×10⁶");
         assert_eq!(format_tick(f64::NAN), "");
+    }
+
+    #[test]
+    fn two_significant_digits() {
+        assert_eq!(two_digits(0.003_12), "0.0031");
+        assert_eq!(two_digits(0.000_312), "3.1×10⁻⁴");
+        assert_eq!(two_digits(0.0123), "0.012");
+        assert_eq!(two_digits(1.234), "1.2");
+        assert_eq!(two_digits(320.0), "320");
+        assert_eq!(two_digits(9.96), "10");
+        assert_eq!(two_digits(-0.0012), "-0.0012");
+        assert_eq!(two_digits(3.1e-6), "3.1×10⁻⁶");
+        assert_eq!(two_digits(0.0), "0");
+        assert_eq!(two_digits(f64::NAN), "");
     }
 
     #[test]

@@ -13,6 +13,7 @@ use crate::lines::{
 };
 use crate::plot::{Plot, inner_size, titled};
 use crate::style::Style;
+use crate::x_band::XBand;
 
 /// A vertical line across a [`HistogramPlot`] at `x`, with a legend entry.
 #[derive(Debug, Clone)]
@@ -77,6 +78,7 @@ pub struct HistogramPlot {
     label: Option<String>,
     color: Option<RGBColor>,
     markers: Vec<Marker>,
+    bands: Vec<XBand>,
     legend: Legend,
 }
 
@@ -95,6 +97,7 @@ impl HistogramPlot {
             label: None,
             color: None,
             markers: Vec::new(),
+            bands: Vec::new(),
             legend: Legend::UpperRight,
         }
     }
@@ -146,6 +149,12 @@ impl HistogramPlot {
     /// Add a vertical marker line.
     pub fn marker(mut self, marker: Marker) -> Self {
         self.markers.push(marker);
+        self
+    }
+    /// Shade an interval of the x axis behind the bars (the axis widens
+    /// to show it).
+    pub fn band(mut self, band: XBand) -> Self {
+        self.bands.push(band);
         self
     }
     /// Where the legend goes.
@@ -245,7 +254,13 @@ impl Plot for HistogramPlot {
         let markers: Vec<&Marker> = self.markers.iter().filter(|m| m.x.is_finite()).collect();
         let x_range = markers
             .iter()
-            .fold(xs, |(a, b), m| (a.min(m.x), b.max(m.x)));
+            .map(|m| (m.x, m.x))
+            .chain(
+                self.bands
+                    .iter()
+                    .filter_map(|b| b.visible_in((f64::MIN, f64::MAX))),
+            )
+            .fold(xs, |(a, b), (lo, hi)| (a.min(lo), b.max(hi)));
         let x_range = pad(x_range, false);
 
         // On a log axis the chart coordinate is log10 of the height.
@@ -282,6 +297,25 @@ impl Plot for HistogramPlot {
             .light_line_style(TRANSPARENT)
             .axis_style(BLACK.stroke_width(1))
             .draw()?;
+        let side = (style.legend_px * 0.7) as i32;
+        for band in &self.bands {
+            let Some((a, b)) = band.visible_in(x_range) else {
+                continue;
+            };
+            let shade = band.color.mix(0.25);
+            chart
+                .draw_series(std::iter::once(Rectangle::new(
+                    [(a, y0), (b, y1)],
+                    shade.filled(),
+                )))?
+                .label(band.label.clone())
+                .legend(move |(x, y)| {
+                    Rectangle::new(
+                        [(x, y - side / 2), (x + 2 * side, y + side / 2)],
+                        shade.filled(),
+                    )
+                });
+        }
         let bars: Vec<(f64, f64)> = heights
             .iter()
             .enumerate()
@@ -293,7 +327,6 @@ impl Plot for HistogramPlot {
                 Rectangle::new([(x, y0), (x + width, h)], bar.mix(0.55).filled())
             }))?;
         if let Some(label) = &self.label {
-            let side = (style.legend_px * 0.7) as i32;
             anno.label(label.clone()).legend(move |(x, y)| {
                 Rectangle::new(
                     [(x, y - side / 2), (x + 2 * side, y + side / 2)],
@@ -322,7 +355,7 @@ impl Plot for HistogramPlot {
             anno.label(m.label.clone())
                 .legend(move |c| legend_glyph(c, kind, color, lw, None, w));
         }
-        let labelled = self.label.is_some() || !markers.is_empty();
+        let labelled = self.label.is_some() || !markers.is_empty() || !self.bands.is_empty();
         if let (Some(pos), true) = (self.legend.position(), labelled) {
             chart
                 .configure_series_labels()

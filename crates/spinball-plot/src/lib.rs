@@ -64,6 +64,7 @@
 mod animation;
 mod colormap;
 mod error;
+mod error_bar;
 mod fixed_palette;
 pub mod font;
 mod format;
@@ -72,26 +73,29 @@ mod grid;
 mod histogram;
 mod lines;
 mod mp4_writer;
-mod outline;
 mod phase_plot;
 mod plot;
 mod style;
 mod table_plot;
+mod x_band;
 
 pub use animation::{Animation, DEFAULT_FILM_SIZE, FilmFormat, MAX_GIF_FPS};
-pub use colormap::{PALETTE, palette, viridis};
+pub use colormap::{PALETTE, palette, value_range, viridis};
 pub use error::PlotError;
-pub use format::{format_tick, format_tick_on, snap_tick};
+pub use error_bar::{CAP_OVERHANG, ErrorBarPixels, bar_shade};
+pub use format::{format_tick, format_tick_on, snap_tick, two_digits};
 pub use grid::{Colorbar, Grid, Panel};
 pub use histogram::{HistogramPlot, Marker};
 pub use lines::{Legend, LineKind, LinePlot, Series};
 pub use mp4_writer::FFMPEG;
-pub use outline::{ARC_POINTS_PER_TURN, Loop, Outline, ToOutline};
 pub use phase_plot::{MapPlot, Scatter3d};
 pub use plot::{Plot, render_png};
 pub use style::Style;
 pub use table_plot::TablePlot;
+pub use x_band::XBand;
 
 pub use plotters;
 pub use plotters::style::RGBColor;
-pub use spinball_geometry::{DVec2, SegmentTable, Table};
+pub use spinball_geometry::{
+    ARC_POINTS_PER_TURN, DVec2, Loop, Outline, SegmentTable, Table, ToOutline,
+};

@@ -8,8 +8,9 @@ use plotters::prelude::*;
 
 use crate::colormap::palette;
 use crate::error::PlotError;
+use crate::error_bar::{ErrorBarPixels, bar_shade, draw_error_bars};
 use crate::font;
-use crate::format::{format_tick, snap_tick, superscript};
+use crate::format::{format_tick, snap_tick, superscript, two_digits};
 use crate::plot::{Plot, inner_size, titled};
 use crate::style::Style;
 
@@ -484,22 +485,6 @@ impl LinePlot {
                 .map(|&(x, y)| (self.ok_x(x) && self.ok_y(y)).then_some((x, y)))
                 .collect();
             let chart_pt = |(x, y): (f64, f64)| (self.tx(x), self.ty(y));
-            if let Some(errors) = &s.errors {
-                let cap = 2 * r + 4;
-                chart.draw_series(ok.iter().zip(errors).filter_map(|(p, e)| {
-                    let (x, y) = (*p)?;
-                    e.is_finite().then(|| {
-                        ErrorBar::new_vertical(
-                            self.tx(x),
-                            clip_y(y - e.abs()),
-                            self.ty(y),
-                            clip_y(y + e.abs()),
-                            color.stroke_width(lw.max(1)),
-                            cap,
-                        )
-                    })
-                }))?;
-            }
             if s.line {
                 for run in runs(&ok) {
                     if run.len() < 2 {
@@ -524,6 +509,29 @@ impl LinePlot {
                         .flatten()
                         .map(|&p| Circle::new(chart_pt(p), r, color.filled())),
                 )?;
+            }
+            // Error bars last, over the markers: a bar shorter than its
+            // marker still shows its caps (see `error_bar`).
+            if let Some(errors) = &s.errors {
+                let shade = bar_shade(color);
+                let bar_r = if s.markers { r } else { 0 };
+                let bars: Vec<_> = ok
+                    .iter()
+                    .zip(errors)
+                    .filter_map(|(p, e)| {
+                        let (x, y) = (*p)?;
+                        if !e.is_finite() {
+                            return None;
+                        }
+                        let cx = self.tx(x);
+                        let at = chart.backend_coord(&(cx, self.ty(y))).1;
+                        let up = chart.backend_coord(&(cx, clip_y(y + e.abs()))).1;
+                        let down = chart.backend_coord(&(cx, clip_y(y - e.abs()))).1;
+                        let px = ErrorBarPixels::new(at, up, down, bar_r);
+                        Some(((cx, self.ty(y)), px))
+                    })
+                    .collect();
+                draw_error_bars(chart, &bars, shade, lw.max(1))?;
             }
             if let Some(label) = &s.label {
                 let w = legend_width(style);
@@ -732,19 +740,6 @@ pub(crate) fn log_label_count(lo: f64, hi: f64) -> usize {
         (span.floor() as usize + 1).min(9)
     } else {
         9
-    }
-}
-
-/// `x > 0` to two significant digits: `0.32`, `3.2`, `320`, `3.2×10⁴`.
-fn two_digits(x: f64) -> String {
-    let e = x.log10().floor() as i32;
-    if (-3..4).contains(&e) {
-        let decimals = (1 - e).max(0) as usize;
-        let r = 10f64.powi(e - 1);
-        format!("{:.decimals$}", (x / r).round() * r)
-    } else {
-        let m = x / 10f64.powi(e);
-        format!("{m:.1}×10{}", superscript(e))
     }
 }
 

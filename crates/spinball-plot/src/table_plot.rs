@@ -8,9 +8,9 @@ use crate::colormap::viridis;
 use crate::error::PlotError;
 use crate::font;
 use crate::format::format_tick_on;
-use crate::outline::{Outline, ToOutline};
 use crate::plot::{Plot, inner_size, titled};
 use crate::style::Style;
+use spinball_geometry::{Outline, ToOutline};
 
 /// Fill of the table's interior.
 pub(crate) const TABLE_FILL: RGBColor = RGBColor(0xF4, 0xF5, 0xF8);
@@ -21,8 +21,9 @@ pub(crate) const OBSTACLE_FILL: RGBColor = RGBColor(0xC8, 0xCB, 0xD2);
 ///
 /// The trajectory is the polyline through the given points (the start and
 /// the collision points, in order); the leg from point `i` to `i + 1` is
-/// coloured [`viridis`]`(i / (n − 2))`, dark early and light late, and the
-/// start is marked with a black dot. Legs with a non-finite end are skipped.
+/// coloured [`viridis`]`(i / (n − 2))`, dark early and light late (or by a
+/// value per leg, [`leg_values`](Self::leg_values)), and the start is
+/// marked with a black dot. Legs with a non-finite end are skipped.
 ///
 /// ```no_run
 /// use spinball_geometry::{DVec2, Sinai};
@@ -39,6 +40,7 @@ pub(crate) const OBSTACLE_FILL: RGBColor = RGBColor(0xC8, 0xCB, 0xD2);
 pub struct TablePlot {
     outline: Outline,
     trajectory: Option<Vec<DVec2>>,
+    leg_values: Option<(Vec<f64>, (f64, f64))>,
     title: Option<String>,
     axes: bool,
 }
@@ -50,6 +52,7 @@ impl TablePlot {
         TablePlot {
             outline: table.outline(),
             trajectory: None,
+            leg_values: None,
             title: None,
             axes: false,
         }
@@ -65,6 +68,29 @@ impl TablePlot {
     pub fn trajectory(mut self, points: impl IntoIterator<Item = DVec2>) -> Self {
         self.trajectory = Some(points.into_iter().collect());
         self
+    }
+
+    /// Colour the legs of the trajectory by a value instead of by time:
+    /// leg `i` (from point `i` to `i + 1`) gets [`viridis`] of `values[i]`
+    /// over `range` (for example the spin `u` during that flight, with the
+    /// range of a [`Colorbar`](crate::Colorbar) beside the table). One
+    /// value per leg; a non-finite one draws grey.
+    pub fn leg_values(mut self, values: impl IntoIterator<Item = f64>, range: (f64, f64)) -> Self {
+        self.leg_values = Some((values.into_iter().collect(), range));
+        self
+    }
+
+    /// The colour of leg `i` of `legs`: by value if
+    /// [`leg_values`](Self::leg_values) were given, else by time (dark
+    /// early, light late).
+    #[must_use]
+    pub fn leg_colour(&self, i: usize, legs: usize) -> RGBColor {
+        match &self.leg_values {
+            Some((v, (lo, hi))) => {
+                viridis((v.get(i).copied().unwrap_or(f64::NAN) - lo) / (hi - lo))
+            }
+            None => viridis(i as f64 / legs.saturating_sub(1).max(1) as f64),
+        }
     }
 
     /// Draw x and y axes with ticks (off by default: a table needs none).
@@ -93,6 +119,25 @@ impl Plot for TablePlot {
         if self.trajectory.is_some() && self.finite_trajectory_points() < 2 {
             return Err(PlotError::EmptyData("trajectory".into()));
         }
+        if let Some((values, (lo, hi))) = &self.leg_values {
+            let legs = self
+                .trajectory
+                .as_ref()
+                .map_or(0, |t| t.len().saturating_sub(1));
+            if values.len() != legs {
+                return Err(PlotError::LengthMismatch {
+                    what: "leg values of the trajectory".into(),
+                    expected: legs,
+                    got: values.len(),
+                });
+            }
+            if !(lo.is_finite() && hi.is_finite() && lo < hi) {
+                return Err(PlotError::Invalid {
+                    what: "leg value range",
+                    why: format!("[{lo}, {hi}] is not an increasing finite range"),
+                });
+            }
+        }
         Ok(())
     }
 
@@ -109,7 +154,6 @@ impl Plot for TablePlot {
         let xy = |p: &DVec2| (p.x, p.y);
         if let Some(path) = &self.trajectory {
             let legs = path.len().saturating_sub(1);
-            let denom = legs.saturating_sub(1).max(1) as f64;
             let width = style.line_width.div_ceil(2);
             chart.draw_series(
                 path.windows(2)
@@ -118,7 +162,7 @@ impl Plot for TablePlot {
                     .map(|(i, w)| {
                         PathElement::new(
                             vec![xy(&w[0]), xy(&w[1])],
-                            viridis(i as f64 / denom).stroke_width(width),
+                            self.leg_colour(i, legs).stroke_width(width),
                         )
                     }),
             )?;
@@ -223,4 +267,35 @@ pub(crate) fn draw_walls<DB: DrawingBackend>(
         )))?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use spinball_geometry::Circle;
+
+    #[test]
+    fn legs_are_coloured_by_time_or_by_value() {
+        let path = [DVec2::ZERO, DVec2::X * 0.5, DVec2::Y * 0.5, -DVec2::X * 0.5];
+        let by_time = TablePlot::new(&Circle::unit()).trajectory(path);
+        assert_eq!(by_time.leg_colour(0, 3), viridis(0.0));
+        assert_eq!(by_time.leg_colour(2, 3), viridis(1.0));
+        let by_spin = by_time.clone().leg_values([-1.0, 0.0, 1.0], (-1.0, 1.0));
+        assert!(by_spin.validate().is_ok());
+        assert_eq!(by_spin.leg_colour(0, 3), viridis(0.0));
+        assert_eq!(by_spin.leg_colour(1, 3), viridis(0.5));
+        assert_eq!(by_spin.leg_colour(2, 3), viridis(1.0));
+        // One value per leg, over an increasing range.
+        let short = by_time.clone().leg_values([0.0, 1.0], (0.0, 1.0));
+        assert!(matches!(
+            short.validate(),
+            Err(PlotError::LengthMismatch {
+                expected: 3,
+                got: 2,
+                ..
+            })
+        ));
+        let flat = by_time.leg_values([0.0; 3], (0.0, 0.0));
+        assert!(matches!(flat.validate(), Err(PlotError::Invalid { .. })));
+    }
 }

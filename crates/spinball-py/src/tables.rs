@@ -7,12 +7,14 @@
 //! ([`with_table!`](crate::with_table)); the built-in tables run as the
 //! `Table` enum, exactly as the Rust `sweep` example runs them.
 
-use pyo3::exceptions::PyTypeError;
+use numpy::ndarray::Array2;
+use numpy::{IntoPyArray, PyArray2};
+use pyo3::exceptions::{PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyString};
 use spinball_geometry::{
     ArcSegment, Boundary, Built, Circle, DVec2, LineSegment, Rectangle, Segment, SegmentTable,
-    Sinai, Stadium, Table, TableFile,
+    Sinai, Stadium, Table, TableFile, ToOutline,
 };
 
 use crate::args::{pair, rows};
@@ -132,6 +134,24 @@ impl PyTable {
         let text = serde_json::to_string(&shape)
             .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
         py.import("json")?.call_method1("loads", (text,))
+    }
+    /// The walls as closed polylines, for drawing: a list of
+    /// `(points, is_hole)`, `points` an `(n, 2)` float array whose last row
+    /// repeats the first; the outer wall first and counter-clockwise,
+    /// obstacles (holes) clockwise; flat walls by their ends, arcs sampled
+    /// every half degree.
+    fn outline<'py>(&self, py: Python<'py>) -> PyResult<Vec<(Bound<'py, PyArray2<f64>>, bool)>> {
+        let outline = with_table!(&self.inner, |t| t.outline());
+        outline
+            .loops()
+            .iter()
+            .map(|l| {
+                let flat: Vec<f64> = l.points().iter().flat_map(|p| [p.x, p.y]).collect();
+                let array = Array2::from_shape_vec((l.points().len(), 2), flat)
+                    .map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+                Ok((array.into_pyarray(py), l.is_hole()))
+            })
+            .collect()
     }
     /// Whether the point `(x, y)` lies inside the table.
     fn contains(&self, x: f64, y: f64) -> bool {

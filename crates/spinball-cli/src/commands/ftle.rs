@@ -11,6 +11,7 @@ use crate::commands::lyapunov::{LyapunovArgs, Outcome, run_ensembles};
 use crate::error::CliError;
 use crate::files::check_creatable;
 use crate::output::write_text;
+use crate::pictures::{check_png, ftle_png};
 
 /// The arguments of `spinball ftle`.
 #[derive(Debug, Clone, Args)]
@@ -93,6 +94,15 @@ pub fn ftle(args: &FtleArgs) -> Result<(), CliError> {
         if let Some(path) = &args.histogram {
             check_creatable("histogram", &for_alpha(path, alphas, k))?;
         }
+        if let Some(path) = &l.png {
+            check_png(&for_alpha(path, alphas, k))?;
+        }
+    }
+    if l.png.is_some() && l.run.shard().count > 1 {
+        return Err(CliError::Usage(
+            "--png draws a whole run: a shard has no distribution yet (draw after `spinball merge`)"
+                .into(),
+        ));
     }
     let estimates = match run_ensembles(&l.run, &l.out, &l.checkpoint)? {
         Outcome::Finished(e) => e,
@@ -113,6 +123,10 @@ pub fn ftle(args: &FtleArgs) -> Result<(), CliError> {
                 .and_then(|d| d.auto_histogram(args.bins))
                 .map_err(CliError::usage)?;
             write_text(&for_alpha(path, alphas, k), &hist.to_csv())?;
+        }
+        if let Some(path) = &l.png {
+            let ftle = e.ftle().map_err(CliError::failed)?;
+            ftle_png(&for_alpha(path, alphas, k), e, &ftle, args.bins)?;
         }
     }
     shown

@@ -3,7 +3,7 @@
 //! bouncing-ball island predicted on a stadium; whole, or one shard at a
 //! time for `spinball merge`.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use clap::Args;
 use spinball_analysis::AnalysisError;
@@ -16,6 +16,7 @@ use spinball_core::SpinLaw;
 use crate::documents::{read_document, write_document};
 use crate::error::CliError;
 use crate::phase_args::{PhaseArgs, PhaseOutput};
+use crate::pictures::{check_png, ftle_map_png};
 use crate::stdout::print;
 
 /// The arguments of `spinball ftle-map`.
@@ -58,6 +59,11 @@ pub struct FtleMapArgs {
     pub shard: Option<Shard>,
     #[command(flatten)]
     pub out: PhaseOutput,
+    /// Draw the map to this PNG, 1200 × 800 px: the FTLE of each cell as
+    /// an image (white off the shell), the predicted bouncing-ball cells
+    /// outlined in red, with a colour bar (checked before the run).
+    #[arg(long)]
+    pub png: Option<PathBuf>,
 }
 
 /// Write the outputs of the finished map `doc` asked for and print a
@@ -154,6 +160,14 @@ pub fn ftle_map(args: &FtleMapArgs) -> Result<(), CliError> {
         ));
     }
     args.out.check()?;
+    if let Some(path) = &args.png {
+        if shard.count > 1 {
+            return Err(CliError::Usage(
+                "--png draws a whole map: a shard holds only some of its cells".into(),
+            ));
+        }
+        check_png(path)?;
+    }
     let slice = match args.q {
         Some(q) => Slice::Q(q),
         None => Slice::Spin(args.spin.unwrap_or(0.0)),
@@ -182,8 +196,14 @@ pub fn ftle_map(args: &FtleMapArgs) -> Result<(), CliError> {
         ));
     }
     let record = part.table.clone();
-    write_results(
-        &FtleMapDocument::new(&table, &law, record, part.map),
-        &args.out,
-    )
+    let doc = FtleMapDocument::new(&table, &law, record, part.map);
+    let written = write_results(&doc, &args.out);
+    if let Some(path) = &args.png {
+        let title = format!(
+            "{} at α = {}: {} collisions per start",
+            doc.table, doc.map.alpha, doc.map.options.collisions
+        );
+        ftle_map_png(path, title, &doc.map, doc.predicted.as_deref())?;
+    }
+    written
 }

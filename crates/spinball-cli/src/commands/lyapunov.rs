@@ -18,6 +18,7 @@ use crate::error::CliError;
 use crate::estimator_args::{EstimatorArgs, run_multilevel, write_multilevel};
 use crate::files::{check_writable, remove_regular};
 use crate::output::OutputArgs;
+use crate::pictures::{check_png, lyapunov_png};
 use crate::run_args::RunArgs;
 use crate::stdout::print;
 use crate::watch::{
@@ -64,6 +65,12 @@ pub struct LyapunovArgs {
     pub checkpoint: CheckpointArgs,
     #[command(flatten)]
     pub estimator: EstimatorArgs,
+    /// Draw the result to this PNG, 1200 × 800 px (checked before the
+    /// run): `lyapunov` draws λ(α) with its standard errors; `ftle` the
+    /// histogram of the exponents with the band of chaos thresholds, one
+    /// file per α named as `--per-ic`'s.
+    #[arg(long)]
+    pub png: Option<PathBuf>,
 }
 
 /// What a run gave: the estimates of a whole run, or a shard's partial
@@ -301,8 +308,23 @@ pub fn lyapunov(args: &LyapunovArgs) -> Result<(), CliError> {
     if let Some(options) = args.estimator.multilevel()? {
         return lyapunov_multilevel(args, &options);
     }
+    if let Some(path) = &args.png {
+        if args.run.shard().count > 1 {
+            return Err(CliError::Usage(
+                "--png draws a whole run: a shard has no λ yet (draw after `spinball merge`)"
+                    .into(),
+            ));
+        }
+        check_png(path)?;
+    }
     match run_ensembles(&args.run, &args.out, &args.checkpoint)? {
-        Outcome::Finished(estimates) => args.out.write_results(&estimates),
+        Outcome::Finished(estimates) => {
+            let written = args.out.write_results(&estimates);
+            if let Some(path) = &args.png {
+                lyapunov_png(path, &estimates)?;
+            }
+            written
+        }
         Outcome::Shard => Ok(()),
     }
 }
@@ -319,9 +341,9 @@ fn lyapunov_multilevel(
                 .into(),
         ));
     }
-    if args.out.csv.is_some() || args.out.npy.is_some() {
+    if args.out.csv.is_some() || args.out.npy.is_some() || args.png.is_some() {
         return Err(CliError::Usage(
-            "--estimator multilevel writes --json only (its levels have different numbers of initial conditions)".into(),
+            "--estimator multilevel writes --json only (its levels have different numbers of initial conditions; no --png)".into(),
         ));
     }
     args.out.check()?;

@@ -1,6 +1,8 @@
 //! `spinball section`: the Birkhoff section of a few orbits, every
 //! collision as a point `(s, sin θ, v∥, |v|, u, wall, Q)`.
 
+use std::path::PathBuf;
+
 use clap::{Args, ValueEnum};
 use spinball_analysis::AnalysisError;
 use spinball_analysis::phase_space::{
@@ -8,9 +10,11 @@ use spinball_analysis::phase_space::{
 };
 use spinball_analysis::report::{Document, PhaseHead, SectionDocument};
 use spinball_core::{Billiard, Sampler};
+use spinball_geometry::Boundary;
 
 use crate::error::CliError;
 use crate::phase_args::{PhaseArgs, PhaseOutput, csv_rows};
+use crate::pictures::{check_png, section_png};
 use crate::stdout::print;
 
 /// How the orbits start.
@@ -60,6 +64,11 @@ pub struct SectionArgs {
     pub spin_slice: Option<f64>,
     #[command(flatten)]
     pub out: PhaseOutput,
+    /// Draw the section to this PNG, 1200 × 800 px: the points (s, sin θ)
+    /// coloured by the spin u, with a colour bar (checked before the run;
+    /// with --png and no other file nothing goes to stdout).
+    #[arg(long)]
+    pub png: Option<PathBuf>,
 }
 
 /// Parse `--spin-slice`: a finite number > 0.
@@ -81,6 +90,9 @@ pub fn section(args: &SectionArgs) -> Result<(), CliError> {
     let p = &args.phase;
     let (table, law, threads) = p.setup()?;
     args.out.check()?;
+    if let Some(path) = &args.png {
+        check_png(path)?;
+    }
     let billiard = Billiard::new(table, law);
     let sampler = match args.sampler {
         StartsArg::Paper => Some(Sampler::Paper),
@@ -103,7 +115,17 @@ pub fn section(args: &SectionArgs) -> Result<(), CliError> {
         None => section_rows(&orbits, |_| true),
     };
     let csv = || csv_rows(&SECTION_COLUMNS, &rows);
-    if !args.out.any_file() {
+    if let Some(path) = &args.png {
+        let title = format!(
+            "{} at α = {alpha}: {} orbits × {} collisions",
+            billiard.table(),
+            args.orbits,
+            args.collisions
+        );
+        let points = rows.iter().map(|r| (r[1], r[2], r[5])).collect();
+        section_png(path, title, billiard.table().perimeter(), points)?;
+    }
+    if !args.out.any_file() && args.png.is_none() {
         return print(&csv());
     }
     let columns = SECTION_COLUMNS

@@ -10,6 +10,7 @@ use spinball_geometry::DVec2;
 
 use crate::error::CliError;
 use crate::output::{write_npy, write_text};
+use crate::pictures::{check_png, trajectory_png};
 use crate::run_args::SamplerArg;
 use crate::stdout::print;
 use crate::table_arg::read_table;
@@ -55,6 +56,12 @@ pub struct TrajectoryArgs {
     /// header: time, x, y, vx, vy, u, wall, s, v_par, q.
     #[arg(long)]
     pub npy: Option<PathBuf>,
+    /// Draw the path on the table to this PNG, 1200 × 800 px, each flight
+    /// coloured by the spin u it carries, with a colour bar (checked
+    /// before the run; with --png and no --csv/--npy nothing goes to
+    /// stdout).
+    #[arg(long)]
+    pub png: Option<PathBuf>,
 }
 
 /// `spinball trajectory`.
@@ -96,6 +103,14 @@ pub fn trajectory(args: &TrajectoryArgs) -> Result<(), CliError> {
             ));
         }
     };
+    if let Some(path) = &args.png {
+        check_png(path)?;
+    }
+    let title = format!(
+        "{table} at α = {}: {} collisions",
+        law.alpha(),
+        args.collisions
+    );
     let billiard = Billiard::new(table, law);
     let log = collision_log(&billiard, start, args.collisions).map_err(|e| match e {
         spinball_analysis::AnalysisError::Launch { source, .. } => {
@@ -111,9 +126,22 @@ pub fn trajectory(args: &TrajectoryArgs) -> Result<(), CliError> {
             &values,
         )?;
     }
+    if let Some(path) = &args.png {
+        // The path: the start, then every collision point; the flight
+        // from point i carries the spin after collision i − 1 (the start's
+        // spin for the first).
+        let mut points = vec![start.position];
+        let mut spins = vec![start.spin];
+        for r in &log.rows {
+            points.push(DVec2::new(r[1], r[2]));
+            spins.push(r[5]);
+        }
+        spins.pop();
+        trajectory_png(path, billiard.table(), title, points, spins)?;
+    }
     match &args.csv {
         Some(path) => write_text(path, &log.to_csv())?,
-        None if args.npy.is_none() => print(&log.to_csv())?,
+        None if args.npy.is_none() && args.png.is_none() => print(&log.to_csv())?,
         None => {}
     }
     Ok(())

@@ -17,6 +17,10 @@ Exponents are per unit time at energy ½ (the paper's units: J. S.
 Lund, J. Murugan, J. P. Shock, *Spinning Billiards and Chaos*,
 arXiv:2505.15335).
 
+Pictures: ``spinball.plot`` draws tables, trajectories coloured by spin,
+sections, FTLE maps and λ(α) with error bars on matplotlib (the optional
+``plot`` extra; ``import spinball`` alone does not import matplotlib).
+
 Tables: ``Circle(radius=1)``, ``Rectangle(l=1, h=1)``, ``Stadium(a=1)``,
 ``Sinai(l=2, r=1)``, ``SegmentTable(outer, holes)`` from ``Line`` and
 ``Arc`` walls (or ``SegmentTable.polygon(vertices)``), ``table("stadium:a=1")``.

@@ -1,4 +1,5 @@
-//! Table outlines as closed polylines, computed from the geometry.
+//! Table outlines as closed polylines, computed from the geometry: what a
+//! picture of a table draws (the plot crate, the Python `plot.table`).
 //!
 //! Drawing needs points, the geometry has walls: [`ToOutline`] turns any
 //! built-in table, a [`Table`] or a [`SegmentTable`] into [`Loop`]s of points,
@@ -8,8 +9,8 @@
 
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
+use crate::{Built, Circle, Rectangle, Segment, SegmentTable, Sinai, Stadium, Table};
 use glam::DVec2;
-use spinball_geometry::{Built, Circle, Rectangle, Segment, SegmentTable, Sinai, Stadium, Table};
 
 /// Points per full turn when sampling an arc (every half degree).
 pub const ARC_POINTS_PER_TURN: usize = 720;
@@ -302,7 +303,7 @@ impl<T: ToOutline + ?Sized> ToOutline for &T {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use spinball_geometry::{ArcSegment, LineSegment};
+    use crate::{ArcSegment, LineSegment};
 
     #[test]
     fn stadium_outline_is_closed_and_tight() {
