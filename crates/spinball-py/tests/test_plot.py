@@ -107,3 +107,14 @@ def test_lyapunov_draws_bars_over_markers_and_names_the_sem():
     # One result is a point.
     ax2 = plot.lyapunov(results[1])
     assert len(ax2.lines[0].get_xdata()) == 1
+
+
+def test_plot_animate_writes_the_library_film(tmp_path):
+    # plot.animate is the library's film (the same bytes as spinball.animate).
+    a = tmp_path / "a.gif"
+    b = tmp_path / "b.gif"
+    film = plot.animate("stadium:a=1", 0.5, a, balls=2, fps=10, duration=1.0, size=(160, 100))
+    spinball.animate("stadium:a=1", 0.5, b, balls=2, fps=10, duration=1.0, size=(160, 100))
+    assert a.read_bytes() == b.read_bytes()
+    assert a.read_bytes()[:6] == b"GIF89a"
+    assert film["positions"].shape == (2, 10, 2)

@@ -39,7 +39,7 @@ import numpy as np
 
 from . import _spinball
 
-__all__ = ["table", "trajectory", "section", "ftle_map", "lyapunov"]
+__all__ = ["table", "trajectory", "section", "ftle_map", "lyapunov", "animate"]
 
 #: Fill of a table's interior and of its obstacles.
 TABLE_FILL = "#f4f5f8"
@@ -315,4 +315,32 @@ def lyapunov(results, ax=None, *, label=None, color=None, marker="o", markersize
     return ax
 
 
-# Animations (``spinball.plot.animate``) join this module here.
+def animate(table, alpha, path, **options):
+    """Write a film (GIF, or MP4 where ``ffmpeg`` is installed) of balls on a table.
+
+    The same film as ``spinball.animate`` and ``spinball animate`` on the
+    command line: the frames are computed and drawn by the library (exact
+    collisions, a marker turning with each ball's spin), so the file does
+    not depend on matplotlib's version. Offered here beside the pictures
+    so a user finds every picture in one module.
+
+    Parameters
+    ----------
+    table : Table or str
+        The table, e.g. ``Stadium(a=1)`` or ``"stadium:a=1"``.
+    alpha : float
+        Spin parameter ``α = I/(m r²)``.
+    path : str or os.PathLike
+        ``.gif`` or ``.mp4``.
+    **options
+        As for :func:`spinball.animate`: ``balls``, ``initial_states``,
+        ``seed``, ``fps``, ``duration``, ``speed``, ``radius``, ``size``,
+        ``title``, ...
+
+    Returns
+    -------
+    dict
+        The frames written (``times``, ``positions``, ``angles``, ``spins``,
+        ``collisions``) as NumPy arrays, as :func:`spinball.animate` returns.
+    """
+    return _spinball.animate(table, alpha, path, **options)
