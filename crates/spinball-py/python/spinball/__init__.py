@@ -15,8 +15,9 @@ the bouncing-ball prediction (``bouncing_ball``, ``pair_rotation``). Exponents a
 Lund, J. Murugan, J. P. Shock, *Spinning Billiards and Chaos*,
 arXiv:2505.15335).
 
-Tables: ``Circle(radius=1)``, ``Rectangle(l=1, h=1)``, ``Stadium(a=1)``,
-``Sinai(l=2, r=1)``, ``SegmentTable(outer, holes)`` from ``Line`` and
+Tables: ``Circle(R=1)``, ``Rectangle(L=1, H=1)``, ``Stadium(a=1)``,
+``Sinai(L=2, R=1)`` (the keywords of the spec strings ``circle:R=1``,
+``rectangle:L=1,H=1``, ``stadium:a=1``, ``sinai:L=2,R=1``), ``SegmentTable(outer, holes)`` from ``Line`` and
 ``Arc`` walls (or ``SegmentTable.polygon(vertices)``), ``table("stadium:a=1")``.
 
 Errors: invalid input raises ``ValueError`` with the Rust message, a run
