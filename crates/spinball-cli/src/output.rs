@@ -125,6 +125,29 @@ impl OutputArgs {
         Ok(())
     }
 
+    /// Write a shard's partial result `doc` to `path` (its `--json`) and,
+    /// unless quiet, say which block (`done`, e.g. `orbits 0..4 of 8`) it
+    /// holds.
+    ///
+    /// # Errors
+    /// [`CliError::Failed`] if the file or stdout cannot be written.
+    pub fn write_shard(
+        &self,
+        path: &Path,
+        doc: &Document,
+        shard: Shard,
+        done: &str,
+    ) -> Result<(), CliError> {
+        write_document(path, doc, false)?;
+        if self.quiet {
+            return Ok(());
+        }
+        print(&format!(
+            "shard {shard}: {done} done; wrote {} (combine the shards with `spinball merge`)\n",
+            path.display()
+        ))
+    }
+
     /// Whether any file is asked for.
     pub fn any_file(&self) -> bool {
         self.json.is_some() || self.csv.is_some() || self.npy.is_some()

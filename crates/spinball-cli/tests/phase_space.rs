@@ -306,17 +306,18 @@ fn kac_refuses_bad_regions() {
 fn shards_merge_bitwise(name: &str, base: &[&str], kind: &str) {
     let dir = scratch(name);
     let files = |stem: &str| ["json", "csv", "npy"].map(|ext| dir.join(format!("{stem}.{ext}")));
+    let outputs = |f: &'_ [std::path::PathBuf; 3]| -> Vec<String> {
+        let mut words = Vec::new();
+        for (flag, path) in ["--json", "--csv", "--npy"].iter().zip(f) {
+            words.extend([flag.to_string(), s(path).to_string()]);
+        }
+        words.push("--quiet".into());
+        words
+    };
     let whole = files("whole");
+    let whole_outputs = outputs(&whole);
     let mut args = base.to_vec();
-    args.extend([
-        "--json",
-        s(&whole[0]),
-        "--csv",
-        s(&whole[1]),
-        "--npy",
-        s(&whole[2]),
-        "--quiet",
-    ]);
+    args.extend(whole_outputs.iter().map(String::as_str));
     ok(&args);
     let mut parts = Vec::new();
     for k in 0..3 {
@@ -329,19 +330,10 @@ fn shards_merge_bitwise(name: &str, base: &[&str], kind: &str) {
         parts.push(part);
     }
     let merged = files("merged");
-    ok(&[
-        "merge",
-        s(&parts[1]),
-        s(&parts[2]),
-        s(&parts[0]),
-        "--json",
-        s(&merged[0]),
-        "--csv",
-        s(&merged[1]),
-        "--npy",
-        s(&merged[2]),
-        "--quiet",
-    ]);
+    let merged_outputs = outputs(&merged);
+    let mut args = vec!["merge", s(&parts[1]), s(&parts[2]), s(&parts[0])];
+    args.extend(merged_outputs.iter().map(String::as_str));
+    ok(&args);
     assert_eq!(read(&merged[0])["kind"], kind);
     for (a, b) in whole.iter().zip(&merged) {
         assert_eq!(

@@ -31,7 +31,7 @@ def test_keywords_are_those_of_the_spec_strings():
     for t, spec in pairs:
         assert t == sb.table(spec)
     # The lower-case keywords of 0.2 still work, with a DeprecationWarning.
-    with pytest.warns(DeprecationWarning, match="keyword is R"):
+    with pytest.warns(DeprecationWarning, match="deprecated"):
         assert sb.Sinai(l=2.0, r=0.5) == sb.Sinai(L=2.0, R=0.5)
     with pytest.warns(DeprecationWarning, match="keyword is R"):
         assert sb.Circle(radius=2.0) == sb.Circle(R=2.0)

@@ -12,7 +12,7 @@ use spinball_analysis::report::{Document, FtleMapDocument, FtleMapPartialDocumen
 use spinball_analysis::run::{FtleMapDefaults, RunDefaults, Shard};
 use spinball_core::SpinLaw;
 
-use crate::documents::{read_document, write_document};
+use crate::documents::read_document;
 use crate::error::CliError;
 use crate::output::OutputArgs;
 use crate::phase_args::PhaseArgs;
@@ -164,17 +164,9 @@ pub fn ftle_map(args: &FtleMapArgs) -> Result<(), CliError> {
         e => CliError::failed(e),
     })?;
     if let Some(path) = shard_path {
-        let starts = part.starts.clone();
-        let on_shell = part.on_shell;
+        let done = format!("on-shell cells {:?} of {}", part.starts, part.on_shell);
         let doc = Document::FtleMapPartial(FtleMapPartialDocument { part });
-        write_document(path, &doc, false)?;
-        if args.out.quiet {
-            return Ok(());
-        }
-        return print(&format!(
-            "shard {shard}: on-shell cells {starts:?} of {on_shell} done; wrote {} (combine the shards with `spinball merge`)\n",
-            path.display()
-        ));
+        return args.out.write_shard(path, &doc, shard, &done);
     }
     let record = part.table.clone();
     write_results(

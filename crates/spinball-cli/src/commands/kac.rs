@@ -9,7 +9,6 @@ use spinball_analysis::report::{Document, KacDocument, KacPartialDocument};
 use spinball_analysis::run::{KacDefaults, Shard};
 use spinball_core::Billiard;
 
-use crate::documents::write_document;
 use crate::error::CliError;
 use crate::output::OutputArgs;
 use crate::phase_args::{PhaseArgs, parse_range};
@@ -84,20 +83,9 @@ pub fn kac(args: &KacArgs) -> Result<(), CliError> {
             .map_err(CliError::failed)?;
         return write_kac(&doc, &args.out);
     };
-    let starts = part.starts.clone();
-    write_document(
-        path,
-        &Document::KacPartial(KacPartialDocument { part }),
-        false,
-    )?;
-    if args.out.quiet {
-        return Ok(());
-    }
-    print(&format!(
-        "shard {shard}: orbits {starts:?} of {} done; wrote {} (combine the shards with `spinball merge`)\n",
-        args.orbits,
-        path.display()
-    ))
+    let done = format!("orbits {:?} of {}", part.starts, args.orbits);
+    let doc = Document::KacPartial(KacPartialDocument { part });
+    args.out.write_shard(path, &doc, shard, &done)
 }
 
 /// Write the finished comparison `doc` to the outputs asked for and print

@@ -10,7 +10,6 @@ use spinball_analysis::report::{Document, PhaseHead, SectionDocument, SectionPar
 use spinball_analysis::run::{SectionDefaults, Shard};
 use spinball_core::{Billiard, Sampler};
 
-use crate::documents::write_document;
 use crate::error::CliError;
 use crate::output::OutputArgs;
 use crate::phase_args::{PhaseArgs, csv_rows};
@@ -185,18 +184,11 @@ pub fn section(args: &SectionArgs) -> Result<(), CliError> {
     let Some(path) = shard_path else {
         return write_section(&doc, &args.out);
     };
+    let done = format!("orbits {starts:?} of {}", args.orbits);
     let part = Document::SectionPartial(SectionPartialDocument {
         shard,
-        starts: starts.clone(),
+        starts,
         section: doc,
     });
-    write_document(path, &part, false)?;
-    if args.out.quiet {
-        return Ok(());
-    }
-    print(&format!(
-        "shard {shard}: orbits {starts:?} of {} done; wrote {} (combine the shards with `spinball merge`)\n",
-        args.orbits,
-        path.display()
-    ))
+    args.out.write_shard(path, &part, shard, &done)
 }
