@@ -320,10 +320,12 @@ impl LyapunovDocument {
     /// of another kind.
     pub fn from_json(text: &str) -> Result<LyapunovDocument, DocumentError> {
         let header: Header = serde_json::from_str(text)?;
-        if header.kind.is_none() && header.schema.is_none() && header.points.is_empty() {
-            if let Ok(estimate) = serde_json::from_str::<crate::run::LyapunovEstimate>(text) {
-                return Ok(LyapunovDocument::new(vec![estimate]));
-            }
+        if header.kind.is_none()
+            && header.schema.is_none()
+            && header.points.is_empty()
+            && let Ok(estimate) = serde_json::from_str::<crate::run::LyapunovEstimate>(text)
+        {
+            return Ok(LyapunovDocument::new(vec![estimate]));
         }
         Document::from_json(text)?.into_lyapunov()
     }

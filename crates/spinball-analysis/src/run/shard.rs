@@ -155,8 +155,9 @@ mod tests {
                 second: 3..10
             })
         );
+        let first_only = [0..4, 4..4];
         assert_eq!(
-            tile(&[0..4], &(0..10)),
+            tile(&first_only, &(0..10)),
             Err(MergeError::Missing { missing: 4..10 })
         );
         assert_eq!(tile(&[], &(0..10)), Err(MergeError::Empty));

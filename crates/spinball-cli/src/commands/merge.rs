@@ -65,15 +65,14 @@ fn different(first: &Path, path: &Path, e: MergeError) -> CliError {
 fn gather<T>(
     args: &MergeArgs,
     first: T,
-    pick: impl Fn(Document) -> Result<T, Document>,
+    pick: impl Fn(Document) -> Result<T, &'static str>,
 ) -> Result<Vec<T>, CliError> {
     let mut parts = vec![first];
     for path in &args.parts[1..] {
-        let part = pick(read_document(path)?).map_err(|other| {
+        let part = pick(read_document(path)?).map_err(|kind| {
             CliError::Usage(format!(
-                "{} is a `{}`, not a shard like {}",
+                "{} is a `{kind}`, not a shard like {}",
                 path.display(),
-                other.kind(),
                 args.parts[0].display()
             ))
         })?;
@@ -141,7 +140,7 @@ pub fn merge(args: &MergeArgs) -> Result<(), CliError> {
         Document::SectionPartial(first) => {
             let parts = gather(args, first, |d| match d {
                 Document::SectionPartial(p) => Ok(p),
-                other => Err(other),
+                other => Err(other.kind()),
             })?;
             let doc = SectionPartialDocument::merge(parts).map_err(|e| refused(args, &e))?;
             write_section(&doc, &args.out)
@@ -149,7 +148,7 @@ pub fn merge(args: &MergeArgs) -> Result<(), CliError> {
         Document::KacPartial(first) => {
             let parts = gather(args, first, |d| match d {
                 Document::KacPartial(p) => Ok(p),
-                other => Err(other),
+                other => Err(other.kind()),
             })?;
             let doc = KacPartialDocument::merge(parts).map_err(|e| refused(args, &e))?;
             write_kac(&doc, &args.out)
