@@ -95,8 +95,14 @@ fn main() -> ExitCode {
             let perimeter = table.perimeter();
             let billiard = Billiard::new(table, law);
             let (seed, threads) = (args.seed, args.threads);
-            let orbits =
-                sampled_sections(&billiard, Sampler::Paper, seed, orbits, collisions, threads)?;
+            let orbits = sampled_sections(
+                &billiard,
+                Sampler::Paper,
+                seed,
+                0..orbits,
+                collisions,
+                threads,
+            )?;
             section_rows(&mut csv, &name, &orbits);
             grid.push(section_panel(perimeter, u_max, orbits.iter().flatten()).title(name));
             runs.push((perimeter, orbits));

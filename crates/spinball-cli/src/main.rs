@@ -28,6 +28,9 @@ mod stdout;
 mod table_arg;
 mod watch;
 
+#[cfg(test)]
+mod defaults_tests;
+
 use std::io::{self, Write};
 use std::process::ExitCode;
 
@@ -47,7 +50,9 @@ use crate::commands::sweep::{SweepArgs, sweep};
 use crate::commands::table::{TableArgs, table};
 use crate::commands::trajectory::{TrajectoryArgs, trajectory};
 use crate::error::CliError;
+use crate::run_args::MethodArg;
 use crate::stdout::stdout_error;
+use spinball_analysis::run::SpectrumDefaults;
 
 /// Spinning billiards: chaos indicators with honest error bars.
 #[derive(Debug, Parser)]
@@ -66,6 +71,11 @@ enum Command {
     /// histogram, beside λ.
     Ftle(Box<FtleArgs>),
     /// The full Lyapunov spectrum (five exponents) of an ensemble.
+    #[command(
+        mut_arg("ics", |a| a.default_value(text(SpectrumDefaults::ICS))),
+        mut_arg("collisions", |a| a.default_value(text(SpectrumDefaults::COLLISIONS))),
+        mut_arg("method", |a| a.default_value(MethodArg::from(SpectrumDefaults::METHOD).name()))
+    )]
     Spectrum(Box<SpectrumArgs>),
     /// The collisions of one start, as CSV or NPY.
     Trajectory(Box<TrajectoryArgs>),
@@ -77,9 +87,9 @@ enum Command {
     /// Combine the partial results of a sharded run into the unsharded
     /// result (bitwise).
     #[command(mut_arg("json", |a| a.help(
-        "Write the merged result as JSON (every statistic, the provenance and the \
-         per-initial-condition values), the file one unsharded run writes. It is \
-         replaced atomically, so it must be a regular file, a link to one, or a new path"
+        "Write the merged result as JSON: the document one unsharded run writes, \
+         bitwise. It is replaced atomically, so it must be a regular file, a link to \
+         one, or a new path"
     )))]
     Merge(MergeArgs),
     /// Write the SLURM job array (tables × α × shards) and merge job of a
@@ -100,6 +110,12 @@ enum Command {
     /// Mean return times to a region of the section against Kac's lemma,
     /// orbits started from the invariant measure.
     Kac(Box<KacArgs>),
+}
+
+/// `n` as the `'static` text clap takes for a default value computed from
+/// a library constant (made once, when the command line is built).
+fn text(n: u64) -> &'static str {
+    Box::leak(n.to_string().into_boxed_str())
 }
 
 fn main() -> ExitCode {

@@ -1,5 +1,7 @@
-//! Where results go: JSON (a `spinball.lyapunov` document, with full
-//! provenance), CSV (one `SweepRow` per α) and NPY (per-initial-condition exponents, for `numpy.load`).
+//! Where results go, for every command that computes one: JSON (a
+//! document of the one result schema, with full provenance), CSV and NPY
+//! (for `numpy.load`), checked before the run; for the ensemble commands
+//! CSV is one `SweepRow` per α and NPY the per-initial-condition exponents.
 
 use std::fs;
 use std::io::BufWriter;
@@ -9,27 +11,29 @@ use clap::Args;
 use npyz::WriterBuilder;
 use spinball_analysis::estimators::PlusMinus;
 use spinball_analysis::report::{Document, LyapunovDocument, csv_string};
-use spinball_analysis::run::LyapunovEstimate;
+use spinball_analysis::run::{LyapunovEstimate, Shard};
 
 use crate::documents::write_document;
 use crate::error::CliError;
 use crate::files::check_outputs;
 use crate::stdout::print;
 
-/// Output options.
+/// Output options, the same for every command that computes a result.
 #[derive(Debug, Clone, Args)]
 pub struct OutputArgs {
-    /// Write the result as JSON (every statistic, the provenance and the
-    /// per-initial-condition values). A sharded run writes its partial
-    /// result here. It is replaced atomically (through a temporary file),
-    /// so it must be a regular file, a link to one, or a new path.
+    /// Write the result as a JSON document (`schema`, `kind`, the table as
+    /// data, every parameter and every value). A sharded run writes its
+    /// partial result here. It is replaced atomically (through a temporary
+    /// file), so it must be a regular file, a link to one, or a new path.
     #[arg(long)]
     pub json: Option<PathBuf>,
-    /// Write one CSV row per α.
+    /// Write the values as CSV: one row per α for `lyapunov`, `ftle` and
+    /// `spectrum`; the columns of the other commands are in their help.
     #[arg(long)]
     pub csv: Option<PathBuf>,
-    /// Write the per-initial-condition exponents as an NPY array of shape
-    /// (number of α, ICs), float64.
+    /// Write the values as a float64 NPY array: per-initial-condition
+    /// exponents of shape (number of α, ICs) for `lyapunov` and `ftle`;
+    /// the shapes of the other commands are in their help.
     #[arg(long)]
     pub npy: Option<PathBuf>,
     /// No progress bar and no table on stdout.
@@ -77,6 +81,76 @@ impl OutputArgs {
             self.json.as_deref(),
             &[("csv", self.csv.as_deref()), ("npy", self.npy.as_deref())],
         )
+    }
+
+    /// The path a shard's partial result goes to: `--json`, which a
+    /// sharded run needs (`None` for a whole run).
+    ///
+    /// # Errors
+    /// [`CliError::Usage`] for a shard without `--json`.
+    pub fn shard_path(&self, shard: Shard) -> Result<Option<&Path>, CliError> {
+        if shard.count <= 1 {
+            return Ok(None);
+        }
+        match &self.json {
+            Some(path) => Ok(Some(path)),
+            None => Err(CliError::Usage(
+                "--shard needs --json: the partial result goes there for `spinball merge`".into(),
+            )),
+        }
+    }
+
+    /// Write the outputs asked for: `doc()` to `--json`, `csv()` to `--csv`,
+    /// `npy()` (shape, row-major values) to `--npy`; each is made only if
+    /// asked for.
+    ///
+    /// # Errors
+    /// [`CliError::Failed`] for a file that cannot be written.
+    pub fn write(
+        &self,
+        doc: impl FnOnce() -> Document,
+        csv: impl FnOnce() -> String,
+        npy: impl FnOnce() -> (Vec<u64>, Vec<f64>),
+    ) -> Result<(), CliError> {
+        if let Some(path) = &self.json {
+            write_document(path, &doc(), false)?;
+        }
+        if let Some(path) = &self.csv {
+            write_text(path, &csv())?;
+        }
+        if let Some(path) = &self.npy {
+            let (shape, values) = npy();
+            write_npy(path, &shape, &values)?;
+        }
+        Ok(())
+    }
+
+    /// Write a shard's partial result `doc` to `path` (its `--json`) and,
+    /// unless quiet, say which block (`done`, e.g. `orbits 0..4 of 8`) it
+    /// holds.
+    ///
+    /// # Errors
+    /// [`CliError::Failed`] if the file or stdout cannot be written.
+    pub fn write_shard(
+        &self,
+        path: &Path,
+        doc: &Document,
+        shard: Shard,
+        done: &str,
+    ) -> Result<(), CliError> {
+        write_document(path, doc, false)?;
+        if self.quiet {
+            return Ok(());
+        }
+        print(&format!(
+            "shard {shard}: {done} done; wrote {} (combine the shards with `spinball merge`)\n",
+            path.display()
+        ))
+    }
+
+    /// Whether any file is asked for.
+    pub fn any_file(&self) -> bool {
+        self.json.is_some() || self.csv.is_some() || self.npy.is_some()
     }
 
     /// Write finished estimates to every output asked for, and print a

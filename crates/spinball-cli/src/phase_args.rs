@@ -1,19 +1,13 @@
 //! What the phase-space commands (`section`, `ftle-map`, `kac`) share: one
-//! table at one α, a seed and threads, and outputs (JSON document, CSV,
-//! NPY) checked before the run.
-
-use std::path::PathBuf;
+//! table at one α, a seed and threads (their outputs are the `OutputArgs`
+//! of every command).
 
 use clap::Args;
-use spinball_analysis::report::Document;
-use spinball_analysis::run::Threads;
+use spinball_analysis::run::{RunDefaults, Threads};
 use spinball_core::{SpinLaw, SpinLawError};
 use spinball_geometry::Built;
 
-use crate::documents::write_document;
 use crate::error::CliError;
-use crate::files::check_outputs;
-use crate::output::{write_npy, write_text};
 use crate::run_args::parse_threads;
 use crate::table_arg::read_table;
 
@@ -62,7 +56,7 @@ pub struct PhaseArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
     /// Seed (of the starts, or of the tangent directions of a map).
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = RunDefaults::SEED)]
     pub seed: u64,
     /// Worker threads, 1..=1024 (default: all cores); results do not
     /// depend on it.
@@ -77,71 +71,8 @@ impl PhaseArgs {
     /// [`CliError::Usage`] for a table or α that cannot work.
     pub fn setup(&self) -> Result<(Built, SpinLaw, Threads), CliError> {
         let (table, law) = self.scene.setup()?;
-        let threads = self.threads.map_or(Threads::All, Threads::Fixed);
+        let threads = self.threads.map_or(RunDefaults::THREADS, Threads::Fixed);
         Ok((table, law, threads))
-    }
-}
-
-/// Where a phase-space result goes.
-#[derive(Debug, Clone, Args)]
-pub struct PhaseOutput {
-    /// Write the result as a JSON document (`kind`, `version`, the table as
-    /// data, every parameter and every value). Replaced atomically, so it
-    /// must be a regular file, a link to one, or a new path.
-    #[arg(long)]
-    pub json: Option<PathBuf>,
-    /// Write the values as CSV (columns in the command's help).
-    #[arg(long)]
-    pub csv: Option<PathBuf>,
-    /// Write the values as a float64 NPY array (shape in the command's
-    /// help), for `numpy.load`.
-    #[arg(long)]
-    pub npy: Option<PathBuf>,
-    /// Print nothing on stdout.
-    #[arg(long, short)]
-    pub quiet: bool,
-}
-
-impl PhaseOutput {
-    /// Check, before the run, that every output can be written.
-    ///
-    /// # Errors
-    /// [`CliError::Usage`] naming the flag and what is wrong.
-    pub fn check(&self) -> Result<(), CliError> {
-        check_outputs(
-            self.json.as_deref(),
-            &[("csv", self.csv.as_deref()), ("npy", self.npy.as_deref())],
-        )
-    }
-
-    /// Write the outputs asked for: `doc()` to `--json`, `csv()` to `--csv`,
-    /// `npy()` (shape, row-major values) to `--npy`; each is made only if
-    /// asked for.
-    ///
-    /// # Errors
-    /// [`CliError::Failed`] for a file that cannot be written.
-    pub fn write(
-        &self,
-        doc: impl FnOnce() -> Document,
-        csv: impl FnOnce() -> String,
-        npy: impl FnOnce() -> (Vec<u64>, Vec<f64>),
-    ) -> Result<(), CliError> {
-        if let Some(path) = &self.json {
-            write_document(path, &doc(), false)?;
-        }
-        if let Some(path) = &self.csv {
-            write_text(path, &csv())?;
-        }
-        if let Some(path) = &self.npy {
-            let (shape, values) = npy();
-            write_npy(path, &shape, &values)?;
-        }
-        Ok(())
-    }
-
-    /// Whether any file is asked for.
-    pub fn any_file(&self) -> bool {
-        self.json.is_some() || self.csv.is_some() || self.npy.is_some()
     }
 }
 

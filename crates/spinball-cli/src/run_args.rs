@@ -2,8 +2,8 @@
 //! initial conditions, collisions, method) and how (engine, threads, shard).
 
 use clap::{Args, ValueEnum};
-use spinball_analysis::estimators::{CHAOS_THRESHOLD, Method, PAPER_DELTA0};
-use spinball_analysis::run::{Engine, Ensemble, Shard, Threads};
+use spinball_analysis::estimators::{Method, PAPER_DELTA0};
+use spinball_analysis::run::{Engine, Ensemble, RunDefaults, Shard, Threads};
 use spinball_core::{Sampler, SpinLaw, SpinLawError};
 use spinball_geometry::Built;
 
@@ -19,6 +19,25 @@ pub enum MethodArg {
     Fd,
 }
 
+impl MethodArg {
+    /// The option's value: `tangent` or `fd`.
+    pub fn name(self) -> &'static str {
+        match self {
+            MethodArg::Tangent => "tangent",
+            MethodArg::Fd => "fd",
+        }
+    }
+}
+
+impl From<Method> for MethodArg {
+    fn from(m: Method) -> Self {
+        match m {
+            Method::Tangent => MethodArg::Tangent,
+            Method::FiniteDifference { .. } => MethodArg::Fd,
+        }
+    }
+}
+
 /// Which engine runs the trajectories.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum EngineArg {
@@ -28,6 +47,15 @@ pub enum EngineArg {
     Scalar,
 }
 
+impl From<Engine> for EngineArg {
+    fn from(e: Engine) -> Self {
+        match e {
+            Engine::Lanes => EngineArg::Lanes,
+            Engine::Scalar => EngineArg::Scalar,
+        }
+    }
+}
+
 /// How initial conditions are drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum SamplerArg {
@@ -35,6 +63,24 @@ pub enum SamplerArg {
     Paper,
     /// Uniform on the energy shell.
     Microcanonical,
+}
+
+impl From<Sampler> for SamplerArg {
+    fn from(s: Sampler) -> Self {
+        match s {
+            Sampler::Paper => SamplerArg::Paper,
+            Sampler::Microcanonical => SamplerArg::Microcanonical,
+        }
+    }
+}
+
+impl From<SamplerArg> for Sampler {
+    fn from(s: SamplerArg) -> Self {
+        match s {
+            SamplerArg::Paper => Sampler::Paper,
+            SamplerArg::Microcanonical => Sampler::Microcanonical,
+        }
+    }
 }
 
 /// Parse `--threads`: a whole number in `1..=`[`Threads::MAX`], checked
@@ -74,28 +120,28 @@ pub struct RunArgs {
     #[arg(long)]
     pub extended: bool,
     /// Initial conditions per α (indices 0..ICS of the seed's streams).
-    #[arg(long, default_value_t = 1000)]
+    #[arg(long, default_value_t = RunDefaults::ICS)]
     pub ics: u64,
     /// Collisions per initial condition.
-    #[arg(long, default_value_t = 10_000)]
+    #[arg(long, default_value_t = RunDefaults::COLLISIONS)]
     pub collisions: u64,
     /// How exponents are measured.
-    #[arg(long, value_enum, default_value_t = MethodArg::Tangent)]
+    #[arg(long, value_enum, default_value_t = RunDefaults::METHOD.into())]
     pub method: MethodArg,
     /// Initial separation of the finite-difference method.
     #[arg(long, default_value_t = PAPER_DELTA0)]
     pub delta0: f64,
     /// Seed of the initial conditions.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = RunDefaults::SEED)]
     pub seed: u64,
     /// How initial conditions are drawn.
-    #[arg(long, value_enum, default_value_t = SamplerArg::Paper)]
+    #[arg(long, value_enum, default_value_t = RunDefaults::SAMPLER.into())]
     pub sampler: SamplerArg,
     /// FTLE above which a trajectory counts as chaotic.
-    #[arg(long, default_value_t = CHAOS_THRESHOLD)]
+    #[arg(long, default_value_t = RunDefaults::THRESHOLD)]
     pub threshold: f64,
     /// Engine.
-    #[arg(long, value_enum, default_value_t = EngineArg::Lanes)]
+    #[arg(long, value_enum, default_value_t = RunDefaults::ENGINE.into())]
     pub engine: EngineArg,
     /// Worker threads, 1..=1024 (default: all cores); results do not
     /// depend on it.
@@ -160,7 +206,7 @@ impl RunArgs {
         }
         let indices = self.shard().range(0..self.ics);
         let threads = match self.threads {
-            None => Threads::All,
+            None => RunDefaults::THREADS,
             Some(n) => Threads::Fixed(n),
         };
         let ensembles: Vec<Ensemble<Built>> = self
@@ -168,10 +214,7 @@ impl RunArgs {
             .into_iter()
             .map(|law| {
                 Ensemble::new(table.clone(), law)
-                    .with_sampler(match self.sampler {
-                        SamplerArg::Paper => Sampler::Paper,
-                        SamplerArg::Microcanonical => Sampler::Microcanonical,
-                    })
+                    .with_sampler(self.sampler.into())
                     .with_seed(self.seed)
                     .with_indices(indices.clone())
                     .with_collisions(self.collisions)

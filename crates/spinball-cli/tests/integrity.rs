@@ -189,11 +189,11 @@ fn resume_refuses_an_edited_checkpoint_and_names_what_differs() {
         2,
         &["alpha 0.5 in the checkpoint, 0.25 asked"],
     );
-    let args = resume(&["--method", "fd"]);
+    let args = resume(&["--method", "tangent"]);
     expect(
         &words(&args),
         2,
-        &["method tangent in the checkpoint, fd (delta0 1e-7) asked"],
+        &["method fd (delta0 1e-7) in the checkpoint, tangent asked"],
     );
     // The tester's edit: one exponent + 100.
     let x = v["points"][0]["trajectories"][0]["exponent"]

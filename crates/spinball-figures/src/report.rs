@@ -27,7 +27,7 @@ use std::time::Instant;
 
 use npyz::WriterBuilder;
 use serde::Serialize;
-use spinball_analysis::report::{SweepRow, csv_text};
+use spinball_analysis::report::{Document, DocumentError, FigureDocument, SweepRow, csv_text};
 
 use crate::args::FigureArgs;
 use crate::csv::Csv;
@@ -47,14 +47,6 @@ pub struct Header {
     pub threads: usize,
     /// Version of the crates that computed it.
     pub version: String,
-}
-
-#[derive(Serialize)]
-struct Document<'a, T: ?Sized> {
-    #[serde(flatten)]
-    header: &'a Header,
-    #[serde(flatten)]
-    body: &'a T,
 }
 
 /// The files of one figure run.
@@ -183,8 +175,10 @@ impl Report {
         Ok(path)
     }
 
-    /// Write the JSON document `file`: the [`Header`] fields, then the
-    /// fields of `body` (a struct or map), pretty-printed.
+    /// Write the JSON document `file`, a `spinball.figure` document of the
+    /// one result schema ([`FigureDocument`]): `schema`, `kind`, the
+    /// [`Header`] fields, then the fields of `body` (a struct or map),
+    /// pretty-printed.
     ///
     /// # Errors
     /// [`FigureError::Json`] if `body` is not a struct or map (or fails to
@@ -194,15 +188,29 @@ impl Report {
         file: &str,
         body: &T,
     ) -> Result<PathBuf, FigureError> {
-        let doc = Document {
-            header: &self.header,
-            body,
-        };
         let path = self.out.join(file);
-        let text = serde_json::to_string_pretty(&doc).map_err(|source| FigureError::Json {
+        let json = |source| FigureError::Json {
             path: path.clone(),
             source,
-        })?;
+        };
+        let data = match serde_json::to_value(body).map_err(json)? {
+            serde_json::Value::Object(fields) => fields,
+            other => {
+                return Err(json(serde::ser::Error::custom(format!(
+                    "a figure's JSON body must be a struct or map, not {other}"
+                ))));
+            }
+        };
+        let h = &self.header;
+        let mut doc = FigureDocument::new(&h.figure, &h.mode, h.seed, h.threads);
+        doc.version.clone_from(&h.version);
+        doc.data = data;
+        let text = Document::Figure(doc)
+            .to_json_pretty()
+            .map_err(|e| match e {
+                DocumentError::Json(source) => json(source),
+                other => json(serde::ser::Error::custom(other)),
+            })?;
         self.text(file, &(text + "\n"))
     }
 
@@ -268,8 +276,15 @@ mod tests {
             alphas: vec![0.0, 1.0],
         };
         let path = r.json("a.json", &body).unwrap();
-        let v: serde_json::Value =
-            serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+        let text = std::fs::read_to_string(&path).unwrap();
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+        // A document of the one result schema, read back whole.
+        assert_eq!(v["kind"], "spinball.figure");
+        let doc = Document::from_json(&text).unwrap().into_figure().unwrap();
+        assert_eq!((doc.figure.as_str(), doc.seed), ("fig_test", 5));
+        assert_eq!(doc.data["alphas"][1], 1.0);
+        assert!(!doc.data.contains_key("schema"));
+        // Old readers still find the header and the fields at the top.
         assert_eq!(v["figure"], "fig_test");
         assert_eq!(v["mode"], "quick");
         assert_eq!(v["seed"], 5);

@@ -81,7 +81,7 @@ mod tests {
         assert_eq!(shell_spin(0.0), 1.0);
         let billiard = Billiard::new(Stadium::new(1.0).unwrap(), SpinLaw::new(0.5).unwrap());
         let orbits =
-            sampled_sections(&billiard, Sampler::Paper, 1, 2, 30, Threads::Fixed(1)).unwrap();
+            sampled_sections(&billiard, Sampler::Paper, 1, 0..2, 30, Threads::Fixed(1)).unwrap();
         let mut csv = Csv::new(&SECTION_COLUMNS);
         section_rows(&mut csv, "stadium", &orbits);
         assert_eq!(csv.rows(), 60);

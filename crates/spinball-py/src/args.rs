@@ -8,7 +8,7 @@ use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyAnyMethods;
 use spinball_analysis::estimators::{Method, PAPER_DELTA0};
-use spinball_analysis::run::{Engine, StopRule, Threads};
+use spinball_analysis::run::{Engine, RunDefaults, StopRule, Threads};
 use spinball_core::{Sampler, SpinLaw, State};
 
 use crate::errors::{spin_law, value_error};
@@ -56,7 +56,7 @@ pub fn method(name: &str, delta0: Option<f64>) -> PyResult<Method> {
 
 /// `"paper"` or `"microcanonical"` (default `"paper"`).
 pub fn sampler(name: Option<&str>) -> PyResult<Sampler> {
-    name.map_or(Ok(Sampler::Paper), |s| {
+    name.map_or(Ok(RunDefaults::SAMPLER), |s| {
         s.parse()
             .map_err(|e: spinball_core::UnknownSampler| value_error(e.to_string()))
     })
@@ -76,7 +76,7 @@ pub fn engine(name: &str) -> PyResult<Engine> {
 /// `None`: all cores; `n >= 1`: a pool of `n` threads.
 pub fn threads(n: Option<i64>) -> PyResult<Threads> {
     match n {
-        None => Ok(Threads::All),
+        None => Ok(RunDefaults::THREADS),
         Some(n) => Ok(Threads::Fixed(count("threads", n, 1)? as usize)),
     }
 }

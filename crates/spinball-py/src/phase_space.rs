@@ -9,12 +9,12 @@ use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use spinball_analysis::AnalysisError;
-use spinball_analysis::estimators::CHAOS_THRESHOLD;
 use spinball_analysis::phase_space::{
     FacingFlats, FtleMapOptions, SECTION_COLUMNS, SectionBox, Slice, ftle_map as map_of,
     invariant_starts, kac_comparison, pair_rotation as rotation, sampled_sections, section_rows,
     sections,
 };
+use spinball_analysis::run::{FtleMapDefaults, KacDefaults, RunDefaults, SectionDefaults};
 use spinball_core::Billiard;
 
 use crate::args::{self, count};
@@ -22,9 +22,20 @@ use crate::errors::{analysis, guarded, value_error};
 use crate::tables::{AnyTable, table_arg};
 use crate::with_table;
 
-// The signatures below write the default threshold as the literal 0.01 so
-// that `help()` shows it; it is the paper's threshold.
-const _: () = assert!(CHAOS_THRESHOLD == 0.01);
+// The signatures below write the defaults as literals so that `help()`
+// shows them; they are the library's, checked here when the package is
+// compiled.
+const _: () = {
+    assert!(RunDefaults::SEED == 0);
+    assert!(RunDefaults::THRESHOLD == 0.01);
+    assert!(SectionDefaults::ORBITS == 8);
+    assert!(SectionDefaults::COLLISIONS == 1000);
+    assert!(KacDefaults::ORBITS == 16);
+    assert!(KacDefaults::COLLISIONS == 10_000);
+    assert!(FtleMapDefaults::COLUMNS == 64);
+    assert!(FtleMapDefaults::ROWS == 64);
+    assert!(FtleMapDefaults::COLLISIONS == 2000);
+};
 
 /// A float64 NumPy array of `values`.
 fn floats<'py>(py: Python<'py>, values: Vec<f64>) -> Bound<'py, PyArray1<f64>> {
@@ -101,13 +112,13 @@ pub fn section<'py>(
                     let billiard = Billiard::new(t, law);
                     let found = match draw {
                         Some(s) => {
-                            sampled_sections(&billiard, s, seed, orbits, collisions, threads)
+                            sampled_sections(&billiard, s, seed, 0..orbits, collisions, threads)
                         }
                         None => invariant_starts(billiard.table(), &law, seed, 0..orbits)
                             .and_then(|st| sections(&billiard, &st, collisions, threads)),
                     }?;
                     let alpha = law.alpha();
-                    Ok::<_, AnalysisError>(section_rows(&found, |p| {
+                    Ok::<_, AnalysisError>(section_rows(&found, 0, |p| {
                         spin_slice.is_none_or(|w| p.w(alpha).abs() < w)
                     }))
                 })

@@ -278,23 +278,41 @@ impl PyLyapunovResult {
             inner: self.inner.merge(&other.inner).map_err(analysis)?,
         })
     }
-    /// The Rust result's serde JSON (`indent` spaces per level, or compact).
+    /// The result document the command line writes for the same run
+    /// (`spinball lyapunov --json`: kind `spinball.lyapunov`, one point),
+    /// compact or indented by `indent` spaces per level; `read_results`
+    /// and `from_json` read it.
     #[pyo3(signature = (indent = None))]
     fn to_json(&self, indent: Option<usize>) -> PyResult<String> {
-        json(&self.inner, indent)
+        let doc = Document::Lyapunov(LyapunovDocument::new(vec![self.inner.clone()]));
+        match indent {
+            None => doc.to_json(),
+            Some(n) => doc.to_json_indent(n),
+        }
+        .map_err(|e| PyRuntimeError::new_err(format!("cannot serialise the result: {e}")))
     }
-    /// `json.loads(self.to_json())`: every field, the per-trajectory values
+    /// The result's fields as a dict (the one point of `to_json()`'s
+    /// document): every statistic and parameter, the per-trajectory values
     /// under `trajectories`.
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         loads(py, &json(&self.inner, None)?)
     }
-    /// A result read back from `to_json()` text. Raises `ValueError` for
-    /// text that is not such a result.
+    /// A result read back from `to_json()` text or a one-point result file
+    /// of the command line (a bare result written by spinball 0.2's
+    /// `to_json` too). Raises `ValueError` for text that is not such a
+    /// result, or a document of several (read those with `read_results`).
     #[staticmethod]
     fn from_json(text: &str) -> PyResult<PyLyapunovResult> {
-        let inner: LyapunovEstimate = serde_json::from_str(text)
+        let mut doc = LyapunovDocument::from_json(text)
             .map_err(|e| value_error(format!("not a spinball LyapunovResult: {e}")))?;
-        Ok(PyLyapunovResult { inner })
+        match doc.points.len() {
+            1 => Ok(PyLyapunovResult {
+                inner: doc.points.remove(0),
+            }),
+            n => Err(value_error(format!(
+                "the document holds {n} results, not one: read it with read_results"
+            ))),
+        }
     }
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
         other
@@ -473,15 +491,14 @@ impl PySpectrumResult {
 }
 
 /// The Lyapunov results of a result document (the `--json` file of
-/// `spinball lyapunov`, `ftle` or `merge`, or `write_results` text), one
-/// per α. Raises `ValueError` naming the schema found and the schema this
-/// version reads for a file of another version (spinball 0.1 results
-/// load), and for text that is not such a document.
+/// `spinball lyapunov`, `ftle` or `merge`, `write_results` or `to_json`
+/// text, or a bare result of spinball 0.2's `to_json`), one per α. Raises
+/// `ValueError` naming the schema found and the schema this version reads
+/// for a file of another version (spinball 0.1 results load), and for
+/// text that is not such a document.
 #[pyfunction]
 pub fn read_results(text: &str) -> PyResult<Vec<PyLyapunovResult>> {
-    let doc = Document::from_json(text)
-        .and_then(Document::into_lyapunov)
-        .map_err(|e| value_error(e.to_string()))?;
+    let doc = LyapunovDocument::from_json(text).map_err(|e| value_error(e.to_string()))?;
     Ok(doc
         .points
         .into_iter()

@@ -10,9 +10,10 @@ use std::time::Instant;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use spinball_analysis::AnalysisError;
-use spinball_analysis::estimators::{CHAOS_THRESHOLD, Method, SpectrumOptions};
+use spinball_analysis::estimators::{Method, PAPER_DELTA0, SpectrumOptions};
 use spinball_analysis::run::{
-    AlphaSweep, Control, Engine, Ensemble, SpectrumEstimate, Threads, spectrum_ensemble,
+    AlphaSweep, Control, Engine, Ensemble, RunDefaults, SpectrumDefaults, SpectrumEstimate,
+    Threads, spectrum_ensemble,
 };
 use spinball_core::{Billiard, Sampler, SpinLaw, State};
 use spinball_geometry::Boundary;
@@ -24,9 +25,25 @@ use crate::tables::table_arg;
 use crate::watch::Watch;
 use crate::with_table;
 
-// The signatures below write the default threshold as the literal 0.01 so
-// that `help()` shows it; it is the paper's threshold.
-const _: () = assert!(CHAOS_THRESHOLD == 0.01);
+// The signatures below write the defaults as literals so that `help()`
+// shows them; they are the library's (`RunDefaults`, `SpectrumDefaults`),
+// checked here when the package is compiled.
+const _: () = {
+    assert!(RunDefaults::SEED == 0);
+    assert!(RunDefaults::ICS == 1000);
+    assert!(RunDefaults::COLLISIONS == 10_000);
+    assert!(
+        matches!(RunDefaults::METHOD, Method::FiniteDifference { delta0 } if delta0 == PAPER_DELTA0)
+    );
+    assert!(matches!(RunDefaults::SAMPLER, Sampler::Paper));
+    assert!(RunDefaults::THRESHOLD == 0.01);
+    assert!(matches!(RunDefaults::ENGINE, Engine::Lanes));
+    assert!(matches!(RunDefaults::THREADS, Threads::All));
+    assert!(SpectrumDefaults::ICS == 50);
+    assert!(SpectrumDefaults::COLLISIONS == 50_000);
+    assert!(matches!(SpectrumDefaults::METHOD, Method::Tangent));
+    assert!(SpectrumDefaults::QR_INTERVAL == 1);
+};
 
 /// Everything of an ensemble but its table and spin law.
 struct Plan {
@@ -67,7 +84,7 @@ impl Plan {
         let ics = match (ics, &states) {
             (Some(n), _) => count("ics", n, 2)?,
             (None, Some(s)) => (s.len() as u64).saturating_sub(first),
-            (None, None) => 1000,
+            (None, None) => RunDefaults::ICS,
         };
         if first.checked_add(ics).is_none() {
             return Err(value_error("first_index + ics overflows a 64-bit index"));
@@ -125,7 +142,8 @@ impl Plan {
 /// - `method`: `"fd"` (the paper's finite-difference Benettin method,
 ///   separation `delta0`, default 1e-7) or `"tangent"` (exact tangent
 ///   dynamics);
-/// - `seed`: seed of the initial conditions and perturbation directions;
+/// - `seed`: seed of the initial conditions and perturbation directions
+///   (default 0);
 /// - `sampler`: `"paper"` (default) or `"microcanonical"`;
 /// - `threads`: `None` (all cores) or the number of threads;
 /// - `initial_states`: `None`, or an `(n, 5)` array of `(x, y, vx, vy, u)`

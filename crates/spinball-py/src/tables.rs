@@ -9,9 +9,9 @@
 
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray2};
-use pyo3::exceptions::{PyRuntimeError, PyTypeError};
+use pyo3::exceptions::{PyDeprecationWarning, PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
-use pyo3::types::{PyList, PyString};
+use pyo3::types::{PyDict, PyList, PyString};
 use spinball_geometry::{
     ArcSegment, Boundary, Built, Circle, DVec2, LineSegment, Rectangle, Segment, SegmentTable,
     Sinai, Stadium, Table, TableFile, ToOutline,
@@ -55,12 +55,12 @@ impl AnyTable {
     #[must_use]
     pub fn repr(&self) -> String {
         match self {
-            AnyTable::Builtin(Table::Circle(c)) => format!("Circle(radius={:?})", c.radius()),
+            AnyTable::Builtin(Table::Circle(c)) => format!("Circle(R={:?})", c.radius()),
             AnyTable::Builtin(Table::Rectangle(r)) => {
-                format!("Rectangle(l={:?}, h={:?})", r.l(), r.h())
+                format!("Rectangle(L={:?}, H={:?})", r.l(), r.h())
             }
             AnyTable::Builtin(Table::Stadium(s)) => format!("Stadium(a={:?})", s.a()),
-            AnyTable::Builtin(Table::Sinai(s)) => format!("Sinai(l={:?}, r={:?})", s.l(), s.r()),
+            AnyTable::Builtin(Table::Sinai(s)) => format!("Sinai(L={:?}, R={:?})", s.l(), s.r()),
             AnyTable::Segments(s) => format!(
                 "SegmentTable(<{} walls, {} holes>)",
                 s.walls().len(),
@@ -167,15 +167,75 @@ impl PyTable {
     }
 }
 
+/// The keywords of a table class: the names of its spec string
+/// (`sinai:L=2,R=1` is `Sinai(L=2, R=1)`), with the lower-case names of
+/// spinball 0.2 (`radius`, `l`, `h`, `r`) still read, with a
+/// `DeprecationWarning`.
+struct Keywords<'py> {
+    class: &'static str,
+    old: Option<Bound<'py, PyDict>>,
+}
+
+impl<'py> Keywords<'py> {
+    fn new(class: &'static str, old: Option<&Bound<'py, PyDict>>) -> Self {
+        Keywords {
+            class,
+            old: old.cloned(),
+        }
+    }
+
+    /// The value of keyword `name` (given as `value`, or as the old name
+    /// `old_name`), else `default`.
+    fn take(&self, value: Option<f64>, name: &str, old_name: &str, default: f64) -> PyResult<f64> {
+        let Some(old) = &self.old else {
+            return Ok(value.unwrap_or(default));
+        };
+        let Some(given) = old.get_item(old_name)? else {
+            return Ok(value.unwrap_or(default));
+        };
+        old.del_item(old_name)?;
+        if value.is_some() {
+            return Err(PyTypeError::new_err(format!(
+                "{}() got {name} and its old name {old_name}: give {name} only",
+                self.class
+            )));
+        }
+        let py = old.py();
+        PyErr::warn(
+            py,
+            &py.get_type::<PyDeprecationWarning>(),
+            &std::ffi::CString::new(format!(
+                "{}({old_name}=...) is deprecated: the keyword is {name}, as in the spec string",
+                self.class
+            ))
+            .unwrap_or_default(),
+            1,
+        )?;
+        given.extract()
+    }
+
+    /// Refuse any keyword left over.
+    fn finish(self, names: &str) -> PyResult<()> {
+        match self.old.as_ref().and_then(|d| d.keys().iter().next()) {
+            Some(k) => Err(PyTypeError::new_err(format!(
+                "{}() got an unexpected keyword argument {k}: its keywords are {names}, as in the spec string",
+                self.class
+            ))),
+            None => Ok(()),
+        }
+    }
+}
+
 fn base(table: impl Into<Table>) -> PyClassInitializer<PyTable> {
     PyClassInitializer::from(PyTable {
         inner: AnyTable::Builtin(table.into()),
     })
 }
 
-/// A circle of radius `radius` about the origin (integrable).
+/// A circle of radius `R` about the origin (integrable); the spec
+/// `circle:R=1`. (`radius=` still works, deprecated.)
 ///
-/// Raises `ValueError` unless `radius` is finite and > 0.
+/// Raises `ValueError` unless `R` is finite and > 0.
 #[pyclass(frozen, extends = PyTable, name = "Circle", module = "spinball")]
 pub struct PyCircle {
     inner: Circle,
@@ -184,19 +244,31 @@ pub struct PyCircle {
 #[pymethods]
 impl PyCircle {
     #[new]
-    #[pyo3(signature = (radius = 1.0))]
-    fn new(radius: f64) -> PyResult<PyClassInitializer<Self>> {
+    #[pyo3(signature = (R = None, **old))]
+    #[allow(non_snake_case)]
+    fn new(R: Option<f64>, old: Option<&Bound<'_, PyDict>>) -> PyResult<PyClassInitializer<Self>> {
+        let k = Keywords::new("Circle", old);
+        let radius = k.take(R, "R", "radius", 1.0)?;
+        k.finish("R")?;
         let t = Circle::new(radius).map_err(geometry)?;
         Ok(base(t).add_subclass(PyCircle { inner: t }))
     }
     /// Radius.
+    #[getter]
+    #[allow(non_snake_case)]
+    fn R(&self) -> f64 {
+        self.inner.radius()
+    }
+    /// Radius (the old name of `R`).
     #[getter]
     fn radius(&self) -> f64 {
         self.inner.radius()
     }
 }
 
-/// The rectangle `[-l, l] × [-h, h]` (integrable; `l`, `h` are half-sides).
+/// The rectangle `[-L, L] × [-H, H]` (integrable; `L`, `H` are
+/// half-sides); the spec `rectangle:L=1,H=1`. (`l=`, `h=` still work,
+/// deprecated.)
 ///
 /// Raises `ValueError` unless both are finite and > 0.
 #[pyclass(frozen, extends = PyTable, name = "Rectangle", module = "spinball")]
@@ -207,17 +279,38 @@ pub struct PyRectangle {
 #[pymethods]
 impl PyRectangle {
     #[new]
-    #[pyo3(signature = (l = 1.0, h = 1.0))]
-    fn new(l: f64, h: f64) -> PyResult<PyClassInitializer<Self>> {
+    #[pyo3(signature = (L = None, H = None, **old))]
+    #[allow(non_snake_case)]
+    fn new(
+        L: Option<f64>,
+        H: Option<f64>,
+        old: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<PyClassInitializer<Self>> {
+        let k = Keywords::new("Rectangle", old);
+        let l = k.take(L, "L", "l", 1.0)?;
+        let h = k.take(H, "H", "h", 1.0)?;
+        k.finish("L, H")?;
         let t = Rectangle::new(l, h).map_err(geometry)?;
         Ok(base(t).add_subclass(PyRectangle { inner: t }))
     }
     /// Half-width.
     #[getter]
-    fn l(&self) -> f64 {
+    #[allow(non_snake_case)]
+    fn L(&self) -> f64 {
         self.inner.l()
     }
     /// Half-height.
+    #[getter]
+    #[allow(non_snake_case)]
+    fn H(&self) -> f64 {
+        self.inner.h()
+    }
+    /// Half-width (the old name of `L`).
+    #[getter]
+    fn l(&self) -> f64 {
+        self.inner.l()
+    }
+    /// Half-height (the old name of `H`).
     #[getter]
     fn h(&self) -> f64 {
         self.inner.h()
@@ -225,7 +318,7 @@ impl PyRectangle {
 }
 
 /// The Bunimovich stadium: flat walls of half-length `a` joined by unit
-/// semicircles (chaotic for `a > 0`).
+/// semicircles (chaotic for `a > 0`); the spec `stadium:a=1`.
 ///
 /// Raises `ValueError` unless `a` is finite and > 0.
 #[pyclass(frozen, extends = PyTable, name = "Stadium", module = "spinball")]
@@ -248,10 +341,11 @@ impl PyStadium {
     }
 }
 
-/// The Sinai billiard: the square `[-l, l]²` minus the disk of radius `r`
-/// about the origin (dispersing).
+/// The Sinai billiard: the square `[-L, L]²` minus the disk of radius `R`
+/// about the origin (dispersing); the spec `sinai:L=2,R=1`. (`l=`, `r=`
+/// still work, deprecated.)
 ///
-/// Raises `ValueError` unless both are finite, > 0 and `r < l`.
+/// Raises `ValueError` unless both are finite, > 0 and `R < L`.
 #[pyclass(frozen, extends = PyTable, name = "Sinai", module = "spinball")]
 pub struct PySinai {
     inner: Sinai,
@@ -260,17 +354,38 @@ pub struct PySinai {
 #[pymethods]
 impl PySinai {
     #[new]
-    #[pyo3(signature = (l = 2.0, r = 1.0))]
-    fn new(l: f64, r: f64) -> PyResult<PyClassInitializer<Self>> {
+    #[pyo3(signature = (L = None, R = None, **old))]
+    #[allow(non_snake_case)]
+    fn new(
+        L: Option<f64>,
+        R: Option<f64>,
+        old: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<PyClassInitializer<Self>> {
+        let k = Keywords::new("Sinai", old);
+        let l = k.take(L, "L", "l", 2.0)?;
+        let r = k.take(R, "R", "r", 1.0)?;
+        k.finish("L, R")?;
         let t = Sinai::new(l, r).map_err(geometry)?;
         Ok(base(t).add_subclass(PySinai { inner: t }))
     }
     /// Half-side of the square.
     #[getter]
-    fn l(&self) -> f64 {
+    #[allow(non_snake_case)]
+    fn L(&self) -> f64 {
         self.inner.l()
     }
     /// Radius of the obstacle.
+    #[getter]
+    #[allow(non_snake_case)]
+    fn R(&self) -> f64 {
+        self.inner.r()
+    }
+    /// Half-side of the square (the old name of `L`).
+    #[getter]
+    fn l(&self) -> f64 {
+        self.inner.l()
+    }
+    /// Radius of the obstacle (the old name of `R`).
     #[getter]
     fn r(&self) -> f64 {
         self.inner.r()

@@ -76,9 +76,15 @@ def test_result_fields_arrays_and_json():
         "sinai:L=2,R=1", 0.5, 4, "paper", "lanes", "completed")
     assert (r.n_ics, r.first_index, r.collisions_per_ic, r.threshold) == (100, 10, 2000, 0.01)
     assert r.wall_time_s > 0 and r.version == sb.__version__
-    # to_dict is the Rust result's serde JSON, field for field.
+    # to_json is the command line's result document; to_dict its one point,
+    # the Rust result's serde JSON, field for field.
     d = r.to_dict()
-    assert d == json.loads(r.to_json()) == json.loads(r.to_json(indent=2))
+    doc = json.loads(r.to_json())
+    assert (doc["schema"], doc["kind"]) == (2, "spinball.lyapunov")
+    assert d == doc["points"][0] == json.loads(r.to_json(indent=2))["points"][0]
+    # The bare result spinball 0.2's to_json wrote still reads.
+    assert sb.LyapunovResult.from_json(json.dumps(d)) == r
+    assert sb.read_results(json.dumps(d)) == [r]
     assert d["mean"] == r.mean and d["sem"] == r.sem and d["median"] == r.median
     assert d["method"] == {"finite_difference": {"delta0": 1e-7}}
     assert d["table"] == {"name": "sinai:L=2,R=1", "shape": {"sinai": {"l": 2.0, "r": 1.0}}}

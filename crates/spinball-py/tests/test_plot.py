@@ -43,7 +43,7 @@ def test_without_matplotlib_the_error_says_how_to_install():
 
 
 def test_table_draws_walls_and_holes_from_the_rust_outline():
-    t = spinball.Sinai(l=2, r=1)
+    t = spinball.Sinai(L=2, R=1)
     loops = t.outline()
     assert [hole for _, hole in loops] == [False, True]
     outer, disk = loops[0][0], loops[1][0]

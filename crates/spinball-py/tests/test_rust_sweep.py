@@ -104,3 +104,34 @@ def test_read_results_refuses_other_versions_and_kinds():
         sb.read_results('{"schema": 2, "kind": "spinball.sweep", "table": "circle", '
                         '"method": "fd", "sampler": "paper", "seed": 1, "delta0": 1e-7, '
                         '"threshold": 0.01, "version": "0.2.0", "points": []}')
+
+
+def test_to_json_is_the_document_of_spinball_lyapunov(tmp_path):
+    """`LyapunovResult.to_json()` is the file `spinball lyapunov --json`
+    writes for the same run, number for number (all but the wall time)."""
+    args = dict(ics=24, collisions=600, method="fd", seed=2)
+    text = run_spinball(tmp_path, "lyapunov", [
+        "--table", "sinai:L=2,R=1", "--alpha", "0.5", "--ics", "24",
+        "--collisions", "600", "--method", "fd", "--seed", "2", "--quiet",
+    ])
+    r = sb.lyapunov(sb.Sinai(L=2, R=1), 0.5, **args)
+    ours, theirs = json.loads(r.to_json()), json.loads(text)
+    for doc in (ours, theirs):
+        doc["points"][0].pop("wall_time_s")
+    assert ours == theirs
+
+
+def test_defaults_are_the_same_from_the_command_line_and_python(tmp_path):
+    """The same run with every default (method, seed, sampler, threshold,
+    engine) gives bitwise the same λ from `spinball lyapunov` and
+    `spinball.lyapunov`; only the size is given, to keep the test short."""
+    text = run_spinball(tmp_path, "lyapunov", [
+        "--table", "stadium:a=1", "--alpha", "0.5", "--ics", "16",
+        "--collisions", "500", "--quiet",
+    ])
+    (cli,) = sb.read_results(text)
+    py = sb.lyapunov(sb.Stadium(a=1), 0.5, ics=16, collisions=500)
+    assert (cli.method, cli.seed, cli.sampler) == (py.method, py.seed, py.sampler) == (
+        "fd", 0, "paper")
+    assert (cli.mean, cli.sem) == (py.mean, py.sem)
+    assert list(cli.exponents) == list(py.exponents)

@@ -11,20 +11,45 @@ import spinball as sb
 
 
 def test_builtin_tables_keep_their_parameters():
-    assert sb.Circle().radius == 1.0
-    assert (sb.Rectangle(2.0, 0.5).l, sb.Rectangle(2.0, 0.5).h) == (2.0, 0.5)
+    assert sb.Circle().R == 1.0
+    assert (sb.Rectangle(2.0, 0.5).L, sb.Rectangle(2.0, 0.5).H) == (2.0, 0.5)
     assert sb.Stadium(a=1.5).a == 1.5
-    s = sb.Sinai(l=2.0, r=1.0)
-    assert (s.l, s.r) == (2.0, 1.0)
+    s = sb.Sinai(L=2.0, R=1.0)
+    assert (s.L, s.R) == (2.0, 1.0)
     for t in [sb.Circle(), sb.Rectangle(), sb.Stadium(), sb.Sinai(), sb.SegmentTable.polygon([(0, 0), (1, 0), (0, 1)])]:
         assert isinstance(t, sb.Table)
 
 
+def test_keywords_are_those_of_the_spec_strings():
+    # Sinai(L=2, R=1) is the spec sinai:L=2,R=1, and so on for every table.
+    pairs = [
+        (sb.Circle(R=2.0), "circle:R=2"),
+        (sb.Rectangle(L=1.5, H=0.5), "rectangle:L=1.5,H=0.5"),
+        (sb.Stadium(a=0.5), "stadium:a=0.5"),
+        (sb.Sinai(L=2.0, R=0.5), "sinai:L=2,R=0.5"),
+    ]
+    for t, spec in pairs:
+        assert t == sb.table(spec)
+    # The lower-case keywords of 0.2 still work, with a DeprecationWarning.
+    with pytest.warns(DeprecationWarning, match="deprecated"):
+        assert sb.Sinai(l=2.0, r=0.5) == sb.Sinai(L=2.0, R=0.5)
+    with pytest.warns(DeprecationWarning, match="keyword is R"):
+        assert sb.Circle(radius=2.0) == sb.Circle(R=2.0)
+    with pytest.warns(DeprecationWarning):
+        assert sb.Rectangle(l=1.5, h=0.5) == sb.Rectangle(L=1.5, H=0.5)
+    # A keyword twice, or one the class does not have, is a TypeError that
+    # names the keywords.
+    with pytest.raises(TypeError, match="give L only"):
+        sb.Sinai(L=2.0, l=2.0)
+    with pytest.raises(TypeError, match="its keywords are L, R"):
+        sb.Sinai(side=2.0)
+
+
 def test_repr_and_spec_round_trip():
-    assert repr(sb.Circle(2.0)) == "Circle(radius=2.0)"
-    assert repr(sb.Rectangle(1.0, 0.5)) == "Rectangle(l=1.0, h=0.5)"
+    assert repr(sb.Circle(2.0)) == "Circle(R=2.0)"
+    assert repr(sb.Rectangle(1.0, 0.5)) == "Rectangle(L=1.0, H=0.5)"
     assert repr(sb.Stadium(1.0)) == "Stadium(a=1.0)"
-    assert repr(sb.Sinai(2.0, 1.0)) == "Sinai(l=2.0, r=1.0)"
+    assert repr(sb.Sinai(2.0, 1.0)) == "Sinai(L=2.0, R=1.0)"
     for t in [sb.Circle(2.0), sb.Rectangle(1.0, 0.5), sb.Stadium(1.0), sb.Sinai(2.0, 0.3)]:
         back = sb.table(t.spec)
         assert type(back) is type(t)

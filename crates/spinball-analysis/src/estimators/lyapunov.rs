@@ -35,9 +35,7 @@ pub const PAPER_DELTA0: f64 = 1e-7;
 impl Default for Method {
     /// The paper's method, `FiniteDifference { delta0: 1e-7 }`.
     fn default() -> Self {
-        Method::FiniteDifference {
-            delta0: PAPER_DELTA0,
-        }
+        crate::run::RunDefaults::METHOD
     }
 }
 

@@ -9,8 +9,8 @@ use spinball_geometry::Boundary;
 use super::ftle_map_shards::ftle_map_part;
 use super::section::state_on_section;
 use crate::error::AnalysisError;
-use crate::estimators::{CHAOS_THRESHOLD, ChaoticFraction};
-use crate::run::{Shard, Threads};
+use crate::estimators::ChaoticFraction;
+use crate::run::{FtleMapDefaults, RunDefaults, Shard, Threads};
 
 /// Which slice of the three-dimensional section a map covers.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -66,17 +66,18 @@ pub struct FtleMapOptions {
 
 impl FtleMapOptions {
     /// A `columns × rows` map at `slice`, 2000 collisions, seed 0, the
-    /// paper's threshold, all threads.
+    /// paper's threshold, all threads ([`FtleMapDefaults`],
+    /// [`RunDefaults`]).
     #[must_use]
     pub fn new(columns: usize, rows: usize, slice: Slice) -> Self {
         FtleMapOptions {
             columns,
             rows,
             slice,
-            collisions: 2_000,
-            seed: 0,
-            threshold: CHAOS_THRESHOLD,
-            threads: Threads::All,
+            collisions: FtleMapDefaults::COLLISIONS,
+            seed: RunDefaults::SEED,
+            threshold: RunDefaults::THRESHOLD,
+            threads: RunDefaults::THREADS,
         }
     }
     /// `collisions` per start.

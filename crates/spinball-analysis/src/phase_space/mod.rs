@@ -8,7 +8,8 @@
 //!   ([`spin_slice`], [`state_on_section`]);
 //! - the invariant measure ([`InvariantMeasure`], [`SectionBox`]) and return
 //!   times against Kac's lemma ([`orbit_returns`], [`kac_comparison`]), a
-//!   test of ergodicity without a Lyapunov exponent;
+//!   test of ergodicity without a Lyapunov exponent, whole or in shards
+//!   that join bitwise ([`kac_part`], [`KacPart::merge`]);
 //! - FTLE maps over a grid of the section ([`ftle_map`], [`FtleMap`],
 //!   [`Slice`]), which show the regular islands, computed whole or in
 //!   shards that join bitwise ([`ftle_map_part`], [`FtleMapPart::merge`]);
@@ -210,6 +211,7 @@ mod invariant_measure;
 mod island_map;
 mod islands;
 mod return_time;
+mod return_time_shards;
 mod section;
 
 pub use bouncing_ball::{BouncingShare, FacingFlats, FlatBand, pair_rotation};
@@ -224,6 +226,7 @@ pub use islands::{
 pub use return_time::{
     KacComparison, OrbitReturns, invariant_start, invariant_starts, kac_comparison, orbit_returns,
 };
+pub use return_time_shards::{KacPart, kac_part};
 pub use section::{
     SECTION_COLUMNS, Section, SectionPoint, sampled_sections, section_points, section_rows,
     sections, spin_slice, state_on_section,

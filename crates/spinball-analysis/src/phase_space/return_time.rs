@@ -9,11 +9,12 @@ use spinball_core::{Billiard, SpinLaw, State, ic_rng};
 use spinball_geometry::Boundary;
 
 use super::invariant_measure::{InvariantMeasure, SectionBox};
+use super::return_time_shards::kac_part;
 use super::section::{Section, state_on_section};
 use crate::error::AnalysisError;
 use crate::estimators::Accumulator;
 use crate::precision::Measurement;
-use crate::run::{Threads, map_indices};
+use crate::run::{Shard, Threads};
 
 /// The visits of one orbit to a region of the section.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -204,40 +205,51 @@ pub fn kac_comparison<B: Boundary + Sync>(
     seed: u64,
     threads: Threads,
 ) -> Result<KacComparison, AnalysisError> {
-    if orbits < 2 {
-        return Err(AnalysisError::invalid(
-            "orbits",
-            format!("need at least 2 for a standard error, got {orbits}"),
-        ));
+    let whole = kac_part(
+        billiard,
+        region,
+        orbits,
+        collisions,
+        seed,
+        threads,
+        Shard::WHOLE,
+    )?;
+    Ok(KacComparison::from_orbits(
+        whole.alpha,
+        whole.region,
+        whole.probability,
+        whole.runs,
+    ))
+}
+
+impl KacComparison {
+    /// The comparison of `runs` (every orbit of a run, in index order) with
+    /// Kac's `1/probability`: the one reduction of the orbits, whole or
+    /// joined from shards.
+    pub(super) fn from_orbits(
+        alpha: f64,
+        region: SectionBox,
+        probability: f64,
+        runs: Vec<OrbitReturns>,
+    ) -> KacComparison {
+        let mut acc = Accumulator::new();
+        for m in runs.iter().filter_map(|o| o.mean_return) {
+            acc.push(m);
+        }
+        let mean_return = acc
+            .mean()
+            .zip(acc.sem())
+            .map(|(m, e)| Measurement::new(m, e));
+        KacComparison {
+            alpha,
+            region,
+            probability,
+            expected: 1.0 / probability,
+            never_returned: runs.iter().filter(|o| o.mean_return.is_none()).count() as u64,
+            orbits: runs,
+            mean_return,
+        }
     }
-    if collisions == 0 {
-        return Err(AnalysisError::invalid("collisions", "must be > 0"));
-    }
-    let (table, law) = (billiard.table(), billiard.law());
-    let measure = InvariantMeasure::new(table, law)?;
-    let probability = measure.probability(region)?;
-    let runs = map_indices(0..orbits, threads, |i| {
-        let start = invariant_start(table, law, &measure, &mut ic_rng(seed, i))?;
-        let r = orbit_returns(billiard, start, collisions, region).map_err(|e| e.at_index(i))?;
-        Ok(OrbitReturns { index: i, ..r })
-    })?;
-    let mut acc = Accumulator::new();
-    for m in runs.iter().filter_map(|o| o.mean_return) {
-        acc.push(m);
-    }
-    let mean_return = acc
-        .mean()
-        .zip(acc.sem())
-        .map(|(m, e)| Measurement::new(m, e));
-    Ok(KacComparison {
-        alpha: law.alpha(),
-        region: region.clone(),
-        probability,
-        expected: 1.0 / probability,
-        never_returned: runs.iter().filter(|o| o.mean_return.is_none()).count() as u64,
-        orbits: runs,
-        mean_return,
-    })
 }
 
 #[cfg(test)]

@@ -142,7 +142,7 @@ pub fn sections<B: Boundary + Sync>(
     })
 }
 
-/// [`sections`] of `orbits` orbits drawn by `sampler`, orbit `i` from
+/// [`sections`] of the orbits `indices` drawn by `sampler`, orbit `i` from
 /// `ic_rng(seed, i)` as [`Ensemble`](crate::run::Ensemble) draws its initial
 /// conditions: the section points of a few typical orbits, as a
 /// Poincaré-section figure shows them.
@@ -153,12 +153,12 @@ pub fn sampled_sections<B: Boundary + Sync>(
     billiard: &Billiard<B>,
     sampler: Sampler,
     seed: u64,
-    orbits: u64,
+    indices: Range<u64>,
     collisions: u64,
     threads: Threads,
 ) -> Result<Vec<Vec<SectionPoint>>, AnalysisError> {
     let (table, law) = (billiard.table(), billiard.law());
-    let starts = (0..orbits)
+    let starts = indices
         .map(|i| sampler.try_initial_state(table, law, seed, i))
         .collect::<Result<Vec<State>, _>>()?;
     sections(billiard, &starts, collisions, threads)
@@ -178,19 +178,21 @@ pub const SECTION_COLUMNS: [&str; 8] = [
     "q",
 ];
 
-/// The points of `orbits` as rows of [`SECTION_COLUMNS`], orbit by orbit
-/// in collision order; `keep` selects the points (`|_| true` for all, or
-/// a spin slice, as [`spin_slice`]). The table a front writes as CSV or
-/// NPY, or hands to NumPy.
+/// The points of `orbits` (orbit indices `first`, `first + 1`, …) as rows
+/// of [`SECTION_COLUMNS`], orbit by orbit in collision order; `keep`
+/// selects the points (`|_| true` for all, or a spin slice, as
+/// [`spin_slice`]). The table a front writes as CSV or NPY, or hands to
+/// NumPy; the rows of a shard's orbits are those of the whole run.
 #[must_use]
 pub fn section_rows(
     orbits: &[Vec<SectionPoint>],
+    first: u64,
     keep: impl Fn(&SectionPoint) -> bool,
 ) -> Vec<[f64; 8]> {
     orbits
         .iter()
-        .enumerate()
-        .flat_map(|(k, orbit)| orbit.iter().map(move |p| (k, p)))
+        .zip(first..)
+        .flat_map(|(orbit, k)| orbit.iter().map(move |p| (k, p)))
         .filter(|(_, p)| keep(p))
         .map(|(k, p)| {
             [
@@ -307,7 +309,7 @@ mod tests {
         // angle of incidence (angular momentum is conserved).
         let billiard = Billiard::new(Circle::unit(), SpinLaw::specular());
         let orbits =
-            sampled_sections(&billiard, Sampler::Paper, 4, 3, 50, Threads::Fixed(1)).unwrap();
+            sampled_sections(&billiard, Sampler::Paper, 4, 0..3, 50, Threads::Fixed(1)).unwrap();
         assert_eq!(orbits.len(), 3);
         for orbit in &orbits {
             assert_eq!(orbit.len(), 50);
@@ -318,7 +320,7 @@ mod tests {
         // With spin: the slice keeps exactly the points with |√α u| < 0.2.
         let spinning = Billiard::new(Stadium::new(1.0).unwrap(), SpinLaw::new(0.5).unwrap());
         let orbits =
-            sampled_sections(&spinning, Sampler::Paper, 4, 4, 500, Threads::Fixed(1)).unwrap();
+            sampled_sections(&spinning, Sampler::Paper, 4, 0..4, 500, Threads::Fixed(1)).unwrap();
         let slice = spin_slice(&orbits, 0.5, 0.2);
         let inside = orbits
             .iter()
@@ -330,7 +332,7 @@ mod tests {
         // keeps every point.
         assert_eq!(spin_slice(&orbits, 0.5, 1.01).len(), 2000);
         // The rows of the slice are its points, tagged by orbit.
-        let rows = section_rows(&orbits, |p| (0.5f64.sqrt() * p.spin).abs() < 0.2);
+        let rows = section_rows(&orbits, 0, |p| (0.5f64.sqrt() * p.spin).abs() < 0.2);
         assert_eq!(rows.len(), slice.len());
         assert!(
             rows.iter()

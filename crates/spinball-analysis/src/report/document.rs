@@ -10,11 +10,15 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+use super::figure::FigureDocument;
 use super::lyapunov::LyapunovDocument;
 use super::multilevel::MultilevelDocument;
 use super::orbits::OrbitsDocument;
 use super::partial::PartialDocument;
-use super::phase_space::{FtleMapDocument, FtleMapPartialDocument, KacDocument, SectionDocument};
+use super::phase_space::{
+    FtleMapDocument, FtleMapPartialDocument, KacDocument, KacPartialDocument, SectionDocument,
+    SectionPartialDocument,
+};
 use super::spectrum::SpectrumDocument;
 use super::sweep::SweepDocument;
 
@@ -63,18 +67,27 @@ pub enum Document {
     /// The stability diagram of periodic orbits (`spinball orbits`).
     #[serde(rename = "spinball.orbits")]
     Orbits(OrbitsDocument),
-    /// A Birkhoff section (`spinball section`).
+    /// A Birkhoff section (`spinball section`, `merge`).
     #[serde(rename = "spinball.section")]
     Section(SectionDocument),
-    /// Return times against Kac's lemma (`spinball kac`).
+    /// One shard of a Birkhoff section.
+    #[serde(rename = "spinball.section.partial")]
+    SectionPartial(SectionPartialDocument),
+    /// Return times against Kac's lemma (`spinball kac`, `merge`).
     #[serde(rename = "spinball.kac")]
     Kac(KacDocument),
+    /// One shard of a comparison with Kac's lemma.
+    #[serde(rename = "spinball.kac.partial")]
+    KacPartial(KacPartialDocument),
     /// A finished FTLE map (`spinball ftle-map`, `merge`).
     #[serde(rename = "spinball.ftle_map")]
     FtleMap(FtleMapDocument),
     /// One shard of an FTLE map.
     #[serde(rename = "spinball.ftle_map.partial")]
     FtleMapPartial(FtleMapPartialDocument),
+    /// What a figure example computed (`<stem>.json` of `fig_*`).
+    #[serde(rename = "spinball.figure")]
+    Figure(FigureDocument),
 }
 
 /// Why a document could not be read or written.
@@ -151,9 +164,12 @@ impl Document {
             Document::Multilevel(_) => "spinball.multilevel",
             Document::Orbits(_) => "spinball.orbits",
             Document::Section(_) => "spinball.section",
+            Document::SectionPartial(_) => "spinball.section.partial",
             Document::Kac(_) => "spinball.kac",
+            Document::KacPartial(_) => "spinball.kac.partial",
             Document::FtleMap(_) => "spinball.ftle_map",
             Document::FtleMapPartial(_) => "spinball.ftle_map.partial",
+            Document::Figure(_) => "spinball.figure",
         }
     }
 
@@ -182,7 +198,12 @@ impl Document {
                     .or_else(|| header.points.into_iter().find_map(|p| p.version)),
             });
         }
-        Ok(serde_json::from_str(text)?)
+        let mut doc: Document = serde_json::from_str(text)?;
+        if let Document::Figure(f) = &mut doc {
+            // The figure's own fields are open: the header's `schema` is not one.
+            f.data.remove("schema");
+        }
+        Ok(doc)
     }
 
     /// The document as compact JSON (one line).
@@ -194,12 +215,28 @@ impl Document {
         Ok(serde_json::to_string(&self.versioned())?)
     }
 
-    /// The document as indented JSON.
+    /// The document as indented JSON (two spaces a level).
     ///
     /// # Errors
     /// As [`Document::to_json`].
     pub fn to_json_pretty(&self) -> Result<String, DocumentError> {
-        Ok(serde_json::to_string_pretty(&self.versioned())?)
+        self.to_json_indent(2)
+    }
+
+    /// The document as JSON indented by `indent` spaces a level.
+    ///
+    /// # Errors
+    /// As [`Document::to_json`].
+    pub fn to_json_indent(&self, indent: usize) -> Result<String, DocumentError> {
+        use serde::Serialize;
+        let pad = vec![b' '; indent];
+        let mut out = Vec::new();
+        let format = serde_json::ser::PrettyFormatter::with_indent(&pad);
+        self.versioned()
+            .serialize(&mut serde_json::Serializer::with_formatter(
+                &mut out, format,
+            ))?;
+        Ok(String::from_utf8(out).expect("serde_json writes UTF-8"))
     }
 
     fn versioned(&self) -> Versioned<'_> {
@@ -231,6 +268,17 @@ impl Document {
         }
     }
 
+    /// The figure this document is.
+    ///
+    /// # Errors
+    /// [`DocumentError::Kind`] for any other kind.
+    pub fn into_figure(self) -> Result<FigureDocument, DocumentError> {
+        match self {
+            Document::Figure(d) => Ok(d),
+            other => Err(other.not("spinball.figure")),
+        }
+    }
+
     /// The sweep this document is.
     ///
     /// # Errors
@@ -253,10 +301,32 @@ impl Document {
         }
     }
 
-    fn not(&self, expected: &'static str) -> DocumentError {
+    pub(super) fn not(&self, expected: &'static str) -> DocumentError {
         DocumentError::Kind {
             found: self.kind().to_string(),
             expected,
         }
+    }
+}
+
+impl LyapunovDocument {
+    /// Read Lyapunov results: a `spinball.lyapunov` document (what the
+    /// command line and Python's `to_json` write), or one bare estimate (a
+    /// `LyapunovResult.to_json()` of spinball 0.2) as a document of one
+    /// point.
+    ///
+    /// # Errors
+    /// As [`Document::from_json`]; [`DocumentError::Kind`] for a document
+    /// of another kind.
+    pub fn from_json(text: &str) -> Result<LyapunovDocument, DocumentError> {
+        let header: Header = serde_json::from_str(text)?;
+        if header.kind.is_none()
+            && header.schema.is_none()
+            && header.points.is_empty()
+            && let Ok(estimate) = serde_json::from_str::<crate::run::LyapunovEstimate>(text)
+        {
+            return Ok(LyapunovDocument::new(vec![estimate]));
+        }
+        Document::from_json(text)?.into_lyapunov()
     }
 }

@@ -50,10 +50,13 @@
 //! | `spinball.sweep` | [`SweepDocument`] | `sweep` |
 //! | `spinball.multilevel` | [`MultilevelDocument`] | `lyapunov`, `sweep` with `--estimator multilevel` |
 //! | `spinball.orbits` | [`OrbitsDocument`] | `orbits` |
-//! | `spinball.section` | [`SectionDocument`] | `section` |
-//! | `spinball.kac` | [`KacDocument`] | `kac` |
+//! | `spinball.section` | [`SectionDocument`] | `section`, `merge` |
+//! | `spinball.section.partial` | [`SectionPartialDocument`] | a section shard |
+//! | `spinball.kac` | [`KacDocument`] | `kac`, `merge` |
+//! | `spinball.kac.partial` | [`KacPartialDocument`] | a Kac shard |
 //! | `spinball.ftle_map` | [`FtleMapDocument`] | `ftle-map`, `merge` |
 //! | `spinball.ftle_map.partial` | [`FtleMapPartialDocument`] | an FTLE map shard |
+//! | `spinball.figure` | [`FigureDocument`] | a figure example's `<stem>.json` |
 //!
 //! [`Document::from_json`] reads the header first: a file of another
 //! schema is refused with [`DocumentError::Version`], naming the schema
@@ -65,7 +68,9 @@
 //! # Merging
 //!
 //! A sharded or interrupted run is joined in one place:
-//! [`PartialDocument::merge`] and [`SpectrumDocument::merge`], after
+//! [`PartialDocument::merge`], [`SpectrumDocument::merge`],
+//! [`SectionPartialDocument::merge`] and [`KacPartialDocument::merge`]
+//! (FTLE maps: [`FtleMapPart::merge`](crate::phase_space::FtleMapPart::merge)), after
 //! `same_run` has compared the pieces field by field. Every refusal is a
 //! [`MergeError`](crate::run::MergeError), the error of
 //! [`merge_partials`](crate::run::merge_partials) too; a front adds the
@@ -73,6 +78,8 @@
 
 #[cfg(feature = "serde")]
 mod document;
+#[cfg(feature = "serde")]
+mod figure;
 mod lyapunov;
 #[cfg(feature = "serde")]
 mod multilevel;
@@ -91,6 +98,8 @@ mod trajectories;
 
 #[cfg(feature = "serde")]
 pub use document::{Document, DocumentError, SCHEMA, SCHEMA_0_1};
+#[cfg(feature = "serde")]
+pub use figure::FigureDocument;
 pub use lyapunov::LyapunovDocument;
 #[cfg(feature = "serde")]
 pub use multilevel::{MultilevelDocument, MultilevelPoint};
@@ -100,7 +109,8 @@ pub use orbits::OrbitsDocument;
 pub use partial::PartialDocument;
 #[cfg(feature = "serde")]
 pub use phase_space::{
-    FtleMapDocument, FtleMapPartialDocument, KacDocument, PhaseHead, SectionDocument,
+    FtleMapDocument, FtleMapPartialDocument, KacDocument, KacPartialDocument, PhaseHead,
+    SectionDocument, SectionPartialDocument,
 };
 pub use rows::{BudgetRow, SweepRow, sweep_rows};
 pub use spectrum::{SpectrumDocument, SpectrumRow};

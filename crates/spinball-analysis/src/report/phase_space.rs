@@ -11,10 +11,12 @@ use serde::{Deserialize, Serialize};
 use spinball_core::SpinLaw;
 use spinball_geometry::{Boundary, Built};
 
+use std::ops::Range;
+
 use crate::estimators::ChaoticFraction;
-use crate::phase_space::{FacingFlats, FtleMap, FtleMapPart, KacComparison};
+use crate::phase_space::{FacingFlats, FtleMap, FtleMapPart, KacComparison, KacPart};
 use crate::precision::Measurement;
-use crate::run::TableRecord;
+use crate::run::{MergeError, RunDifference, Shard, TableRecord, tile};
 
 /// What every section and Kac document starts with: who wrote it, the
 /// table and α.
@@ -61,6 +63,94 @@ pub struct SectionDocument {
     pub columns: BTreeMap<String, Vec<f64>>,
 }
 
+/// One shard of a Birkhoff section (`spinball section --shard`, kind
+/// `spinball.section.partial`): the points of the orbits `starts` of the
+/// run `section` describes.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SectionPartialDocument {
+    /// Which shard this is.
+    pub shard: Shard,
+    /// The orbits this shard ran (of the whole run's `0..section.orbits`).
+    pub starts: Range<u64>,
+    /// The whole run's parameters, with the points of these orbits only
+    /// (the `orbit` column holds the run's orbit indices).
+    pub section: SectionDocument,
+}
+
+impl SectionPartialDocument {
+    /// Whether `other` is a shard of the same section: the first field
+    /// that differs (table by its geometry, version, α, sampler, seed,
+    /// orbits, collisions, slice; numbers bit for bit).
+    ///
+    /// # Errors
+    /// [`MergeError::DifferentRuns`] naming the field and both values;
+    /// [`MergeError::Table`] for a table without a shape.
+    pub fn same_run(&self, other: &SectionPartialDocument) -> Result<(), MergeError> {
+        let (a, b) = (&self.section, &other.section);
+        a.head.table.same_table(&b.head.table)?;
+        let fields: [(&'static str, String, String); 8] = [
+            ("version", a.head.version.clone(), b.head.version.clone()),
+            (
+                "alpha",
+                format!("{:?}", a.head.alpha),
+                format!("{:?}", b.head.alpha),
+            ),
+            ("sampler", a.sampler.clone(), b.sampler.clone()),
+            ("seed", a.seed.to_string(), b.seed.to_string()),
+            ("orbits", a.orbits.to_string(), b.orbits.to_string()),
+            (
+                "collisions per orbit",
+                a.collisions.to_string(),
+                b.collisions.to_string(),
+            ),
+            (
+                "spin slice",
+                format!("{:?}", a.spin_slice),
+                format!("{:?}", b.spin_slice),
+            ),
+            (
+                "columns",
+                format!("{:?}", a.columns.keys().collect::<Vec<_>>()),
+                format!("{:?}", b.columns.keys().collect::<Vec<_>>()),
+            ),
+        ];
+        match fields.into_iter().find(|(_, x, y)| x != y) {
+            Some((what, first, other)) => Err(RunDifference::Field { what, first, other }.into()),
+            None => Ok(()),
+        }
+    }
+
+    /// Join the shards of one section (in any order) into the section one
+    /// unsharded run gives, bitwise: the points orbit by orbit.
+    ///
+    /// # Errors
+    /// [`MergeError`]: no shards, shards of different runs
+    /// ([`SectionPartialDocument::same_run`]), blocks of orbits that overlap
+    /// or leave orbits out.
+    pub fn merge(parts: Vec<SectionPartialDocument>) -> Result<SectionDocument, MergeError> {
+        let first = parts.first().ok_or(MergeError::Empty)?;
+        for p in &parts[1..] {
+            first.same_run(p)?;
+        }
+        let blocks: Vec<Range<u64>> = parts.iter().map(|p| p.starts.clone()).collect();
+        let order = tile(&blocks, &(0..first.section.orbits))?;
+        let mut section = SectionDocument {
+            columns: BTreeMap::new(),
+            ..first.section.clone()
+        };
+        for k in order {
+            for (name, values) in &parts[k].section.columns {
+                section
+                    .columns
+                    .entry(name.clone())
+                    .or_default()
+                    .extend_from_slice(values);
+            }
+        }
+        Ok(section)
+    }
+}
+
 /// Mean return times to a region against Kac's lemma (`spinball kac`,
 /// kind `spinball.kac`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -77,6 +167,39 @@ pub struct KacDocument {
     pub ratio: Option<Measurement>,
     /// The comparison, orbit by orbit.
     pub comparison: KacComparison,
+}
+
+/// One shard of a comparison with Kac's lemma (`spinball kac --shard`,
+/// kind `spinball.kac.partial`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct KacPartialDocument {
+    /// The shard.
+    pub part: KacPart,
+}
+
+impl KacPartialDocument {
+    /// Join the shards of one run (in any order) into the document one
+    /// unsharded run writes, bitwise ([`KacPart::merge`]).
+    ///
+    /// # Errors
+    /// As [`KacPart::merge`].
+    pub fn merge(parts: Vec<KacPartialDocument>) -> Result<KacDocument, MergeError> {
+        let first = parts.first().ok_or(MergeError::Empty)?;
+        let head = PhaseHead {
+            version: first.part.version.clone(),
+            table: first.part.table.clone(),
+            alpha: first.part.alpha,
+        };
+        let (seed, collisions) = (first.part.seed, first.part.collisions);
+        let comparison = KacPart::merge(parts.into_iter().map(|d| d.part).collect())?;
+        Ok(KacDocument {
+            head,
+            seed,
+            collisions,
+            ratio: comparison.ratio(),
+            comparison,
+        })
+    }
 }
 
 impl KacDocument {

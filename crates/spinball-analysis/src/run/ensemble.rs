@@ -9,20 +9,22 @@ use spinball_core::{Billiard, Sampler, SpinLaw, State, TangentVector, random_dir
 use spinball_geometry::{Boundary, Table};
 use spinball_lanes::{CHUNK, LaneBilliard, LanesError};
 
+use super::defaults::RunDefaults;
 use super::engine::Engine;
 use super::parallel::{Threads, map_chunks};
 use super::provenance::{Provenance, TableRecord};
 use super::starts::Starts;
 use super::trajectory::{TrajectoryStats, scalar_chunked, start_ftle};
 use crate::error::AnalysisError;
-use crate::estimators::{CHAOS_THRESHOLD, LyapunovOptions, Method};
+use crate::estimators::{LyapunovOptions, Method};
 
 /// An ensemble of trajectories to estimate the largest Lyapunov exponent.
 ///
 /// Build it with [`Ensemble::new`] (a sampler draws the initial conditions)
 /// or [`Ensemble::from_states`] (you give them) and the `with_*` methods.
 /// The table is any [`Boundary`]; the built-in [`Table`] enum is the
-/// default type parameter, for a table chosen at run time. Defaults: the
+/// default type parameter, for a table chosen at run time. Defaults
+/// ([`RunDefaults`]): the
 /// paper's sampler and finite-difference method (δ0 = 1e-7), seed 0,
 /// initial conditions `0..1000`, 10⁴ collisions each (converged to the
 /// paper's three digits, its Table I), all threads, chaos threshold 0.01,
@@ -83,14 +85,14 @@ impl<B: Boundary> Ensemble<B> {
         Ensemble {
             table,
             law,
-            starts: Starts::Sampled(Sampler::Paper),
-            seed: 0,
-            indices: 0..1000,
-            collisions: 10_000,
-            method: Method::default(),
-            threads: Threads::All,
-            threshold: CHAOS_THRESHOLD,
-            engine: Engine::default(),
+            starts: Starts::Sampled(RunDefaults::SAMPLER),
+            seed: RunDefaults::SEED,
+            indices: 0..RunDefaults::ICS,
+            collisions: RunDefaults::COLLISIONS,
+            method: RunDefaults::METHOD,
+            threads: RunDefaults::THREADS,
+            threshold: RunDefaults::THRESHOLD,
+            engine: RunDefaults::ENGINE,
         }
     }
 

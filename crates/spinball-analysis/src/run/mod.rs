@@ -19,7 +19,20 @@
 //!   specification every engine reproduces) and the deterministic parallel
 //!   map ([`map_indices`], [`map_chunks`]);
 //! - scenes built from ensembles: λ(α) with [`AlphaSweep`], the averaged
-//!   spectrum with [`spectrum_ensemble`].
+//!   spectrum with [`spectrum_ensemble`];
+//! - the defaults every front shares ([`RunDefaults`] and its siblings).
+//!
+//! # Defaults
+//! One set of defaults for every front: [`RunDefaults`] (an ensemble run:
+//! seed 0, 1000 initial conditions of 10⁴ collisions, the paper's sampler
+//! and finite-difference method, threshold 0.01, lanes, all threads),
+//! [`SpectrumDefaults`], [`SectionDefaults`], [`KacDefaults`] and
+//! [`FtleMapDefaults`]. [`Ensemble::new`], `Method::default` and
+//! `FtleMapOptions::new` read them; the command line's option defaults and
+//! the Python keyword defaults are these constants too (the CLI reads them,
+//! the Python package checks its literals against them when it is
+//! compiled), so a run without options gives the same numbers from every
+//! front. docs/DEFAULTS.md is the table for users.
 //!
 //! # Where `impl Ensemble` lives
 //! [`Ensemble`] is one type with three `impl` blocks, each next to what it
@@ -248,6 +261,7 @@
 
 mod alpha_sweep;
 mod checksum;
+mod defaults;
 mod driver;
 mod engine;
 mod ensemble;
@@ -263,6 +277,7 @@ mod trajectory;
 
 pub use alpha_sweep::{AlphaSweep, SweepEvent, linspace};
 pub use checksum::IntegrityError;
+pub use defaults::{FtleMapDefaults, KacDefaults, RunDefaults, SectionDefaults, SpectrumDefaults};
 pub use driver::{BatchProgress, Control, RunEvent, RunObserver, Silent};
 pub use engine::Engine;
 pub use ensemble::Ensemble;
@@ -270,7 +285,7 @@ pub use parallel::{Threads, map_chunks, map_indices};
 pub use partial::{MergeError, PartialRun, merge_partials};
 pub use provenance::{Provenance, RunDifference, TableRecord};
 pub use result::{LyapunovEstimate, StopReason};
-pub use shard::Shard;
+pub use shard::{Shard, tile};
 pub use spectrum_ensemble::{SpectrumEstimate, spectrum_ensemble};
 pub use starts::Starts;
 pub use stop_rule::StopRule;

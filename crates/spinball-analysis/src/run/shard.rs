@@ -4,6 +4,7 @@
 
 use std::{fmt, ops::Range, str::FromStr};
 
+use super::partial::MergeError;
 use crate::error::AnalysisError;
 
 /// Shard `index` of `count` (0-based: `0/4` … `3/4`, as a SLURM array
@@ -51,6 +52,49 @@ impl Shard {
     }
 }
 
+/// Check that the blocks (of the shards of one run) tile `total`: each
+/// index in exactly one block. Returns the positions of the blocks in
+/// `blocks` in index order, the order to join them in.
+///
+/// # Errors
+/// [`MergeError::Empty`] for no blocks, [`MergeError::Overlap`] for two
+/// blocks that share indices, [`MergeError::Missing`] for indices of
+/// `total` no block holds, or a block outside it.
+pub fn tile(blocks: &[Range<u64>], total: &Range<u64>) -> Result<Vec<usize>, MergeError> {
+    if blocks.is_empty() {
+        return Err(MergeError::Empty);
+    }
+    let mut order: Vec<usize> = (0..blocks.len()).collect();
+    order.sort_by_key(|&k| (blocks[k].start, blocks[k].end));
+    let mut next = total.start;
+    let mut previous: Option<&Range<u64>> = None;
+    for &k in &order {
+        let b = &blocks[k];
+        if b.start > next {
+            return Err(MergeError::Missing {
+                missing: next..b.start,
+            });
+        }
+        if b.start < next {
+            return Err(MergeError::Overlap {
+                first: previous.cloned().unwrap_or(total.start..next),
+                second: b.clone(),
+            });
+        }
+        next = b.end;
+        previous = Some(b);
+    }
+    match next.cmp(&total.end) {
+        std::cmp::Ordering::Less => Err(MergeError::Missing {
+            missing: next..total.end,
+        }),
+        std::cmp::Ordering::Greater => Err(MergeError::Missing {
+            missing: total.end..next,
+        }),
+        std::cmp::Ordering::Equal => Ok(order),
+    }
+}
+
 impl fmt::Display for Shard {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}/{}", self.index, self.count)
@@ -94,6 +138,29 @@ mod tests {
             let (lo, hi) = (sizes.iter().min().unwrap(), sizes.iter().max().unwrap());
             assert!(hi - lo <= 1, "{sizes:?}");
         }
+    }
+
+    #[test]
+    fn tiles_are_checked_and_ordered() {
+        let blocks = [4..7, 0..4, 7..10];
+        assert_eq!(tile(&blocks, &(0..10)).unwrap(), vec![1, 0, 2]);
+        assert_eq!(
+            tile(&[0..4, 5..10], &(0..10)),
+            Err(MergeError::Missing { missing: 4..5 })
+        );
+        assert_eq!(
+            tile(&[0..4, 3..10], &(0..10)),
+            Err(MergeError::Overlap {
+                first: 0..4,
+                second: 3..10
+            })
+        );
+        let first_only = [0..4, 4..4];
+        assert_eq!(
+            tile(&first_only, &(0..10)),
+            Err(MergeError::Missing { missing: 4..10 })
+        );
+        assert_eq!(tile(&[], &(0..10)), Err(MergeError::Empty));
     }
 
     #[test]

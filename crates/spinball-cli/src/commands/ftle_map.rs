@@ -7,15 +7,15 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use spinball_analysis::AnalysisError;
-use spinball_analysis::estimators::CHAOS_THRESHOLD;
 use spinball_analysis::phase_space::{FtleMapOptions, FtleMapPart, Slice, ftle_map_part};
 use spinball_analysis::report::{Document, FtleMapDocument, FtleMapPartialDocument};
-use spinball_analysis::run::Shard;
+use spinball_analysis::run::{FtleMapDefaults, RunDefaults, Shard};
 use spinball_core::SpinLaw;
 
-use crate::documents::{read_document, write_document};
+use crate::documents::read_document;
 use crate::error::CliError;
-use crate::phase_args::{PhaseArgs, PhaseOutput};
+use crate::output::OutputArgs;
+use crate::phase_args::PhaseArgs;
 use crate::pictures::{check_png, ftle_map_png};
 use crate::stdout::print;
 
@@ -28,11 +28,11 @@ pub struct FtleMapArgs {
     #[command(flatten)]
     pub phase: PhaseArgs,
     /// Cells along the arc length s, 1..=65536 (columns × rows ≤ 2^32).
-    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..=65_536))]
+    #[arg(long, default_value_t = FtleMapDefaults::COLUMNS, value_parser = clap::value_parser!(u32).range(1..=65_536))]
     pub columns: u32,
     /// Cells along the row coordinate (sin θ at fixed spin, v∥/|V| at
     /// fixed Q), 1..=65536.
-    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..=65_536))]
+    #[arg(long, default_value_t = FtleMapDefaults::ROWS, value_parser = clap::value_parser!(u32).range(1..=65_536))]
     pub rows: u32,
     /// The slice at fixed spin u (needs αu² < 1); the default slice is
     /// u = 0.
@@ -48,17 +48,17 @@ pub struct FtleMapArgs {
     #[arg(long, value_name = "Q", allow_negative_numbers = true)]
     pub q: Option<f64>,
     /// Collisions per start (exact tangent method), 1..=100000000.
-    #[arg(long, default_value_t = 2000, value_parser = clap::value_parser!(u64).range(1..=100_000_000))]
+    #[arg(long, default_value_t = FtleMapDefaults::COLLISIONS, value_parser = clap::value_parser!(u64).range(1..=100_000_000))]
     pub collisions: u64,
     /// FTLE at or below which a cell is regular.
-    #[arg(long, default_value_t = CHAOS_THRESHOLD)]
+    #[arg(long, default_value_t = RunDefaults::THRESHOLD)]
     pub threshold: f64,
     /// Run only shard K of N (0-based, `K/N`): a block of the cells; the
     /// partial map goes to --json, for `spinball merge`.
     #[arg(long)]
     pub shard: Option<Shard>,
     #[command(flatten)]
-    pub out: PhaseOutput,
+    pub out: OutputArgs,
     /// Draw the map to this PNG, 1200 × 800 px: the FTLE of each cell as
     /// an image (white off the shell), the predicted bouncing-ball cells
     /// outlined in red, with a colour bar (checked before the run).
@@ -71,7 +71,7 @@ pub struct FtleMapArgs {
 ///
 /// # Errors
 /// [`CliError::Failed`] for an output that cannot be written.
-fn write_results(doc: &FtleMapDocument, out: &PhaseOutput) -> Result<(), CliError> {
+fn write_results(doc: &FtleMapDocument, out: &OutputArgs) -> Result<(), CliError> {
     let map = &doc.map;
     out.write(
         || Document::FtleMap(doc.clone()),
@@ -125,7 +125,7 @@ fn read_partial(path: &Path) -> Result<FtleMapPart, CliError> {
 pub fn merge_maps(
     first: FtleMapPart,
     rest: &[std::path::PathBuf],
-    out: &PhaseOutput,
+    out: &OutputArgs,
 ) -> Result<(), CliError> {
     out.check()?;
     let mut parts = vec![first];
@@ -154,11 +154,7 @@ pub fn ftle_map(args: &FtleMapArgs) -> Result<(), CliError> {
     let p = &args.phase;
     let (table, law, threads) = p.setup()?;
     let shard = args.shard.unwrap_or(Shard::WHOLE);
-    if shard.count > 1 && args.out.json.is_none() {
-        return Err(CliError::Usage(
-            "--shard needs --json: the partial map goes there for `spinball merge`".into(),
-        ));
-    }
+    let shard_path = args.out.shard_path(shard)?;
     args.out.check()?;
     if let Some(path) = &args.png {
         if shard.count > 1 {
@@ -181,19 +177,10 @@ pub fn ftle_map(args: &FtleMapArgs) -> Result<(), CliError> {
         AnalysisError::InvalidOption { .. } => CliError::usage(e),
         e => CliError::failed(e),
     })?;
-    if shard.count > 1 {
-        let path = args.out.json.as_ref().expect("checked above");
-        let starts = part.starts.clone();
-        let on_shell = part.on_shell;
+    if let Some(path) = shard_path {
+        let done = format!("on-shell cells {:?} of {}", part.starts, part.on_shell);
         let doc = Document::FtleMapPartial(FtleMapPartialDocument { part });
-        write_document(path, &doc, false)?;
-        if args.out.quiet {
-            return Ok(());
-        }
-        return print(&format!(
-            "shard {shard}: on-shell cells {starts:?} of {on_shell} done; wrote {} (combine the shards with `spinball merge`)\n",
-            path.display()
-        ));
+        return args.out.write_shard(path, &doc, shard, &done);
     }
     let record = part.table.clone();
     let doc = FtleMapDocument::new(&table, &law, record, part.map);

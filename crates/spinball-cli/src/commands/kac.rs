@@ -4,12 +4,14 @@
 use clap::Args;
 use spinball_analysis::AnalysisError;
 use spinball_analysis::estimators::PlusMinus;
-use spinball_analysis::phase_space::{SectionBox, kac_comparison};
-use spinball_analysis::report::{Document, KacDocument};
+use spinball_analysis::phase_space::{SectionBox, kac_part};
+use spinball_analysis::report::{Document, KacDocument, KacPartialDocument};
+use spinball_analysis::run::{KacDefaults, Shard};
 use spinball_core::Billiard;
 
 use crate::error::CliError;
-use crate::phase_args::{PhaseArgs, PhaseOutput, parse_range};
+use crate::output::OutputArgs;
+use crate::phase_args::{PhaseArgs, parse_range};
 use crate::stdout::print;
 
 /// The arguments of `spinball kac`.
@@ -33,13 +35,17 @@ pub struct KacArgs {
     pub w: Option<(f64, f64)>,
     /// Orbits, started from the invariant measure (streams `0..ORBITS` of
     /// the seed), 2..=10000000.
-    #[arg(long, default_value_t = 16, value_parser = clap::value_parser!(u64).range(2..=10_000_000))]
+    #[arg(long, default_value_t = KacDefaults::ORBITS, value_parser = clap::value_parser!(u64).range(2..=10_000_000))]
     pub orbits: u64,
     /// Collisions per orbit, 1..=10000000000.
-    #[arg(long, default_value_t = 10_000, value_parser = clap::value_parser!(u64).range(1..=10_000_000_000))]
+    #[arg(long, default_value_t = KacDefaults::COLLISIONS, value_parser = clap::value_parser!(u64).range(1..=10_000_000_000))]
     pub collisions: u64,
+    /// Run only shard K of N (0-based, `K/N`): a block of the orbits; the
+    /// partial result goes to --json, for `spinball merge`.
+    #[arg(long)]
+    pub shard: Option<Shard>,
     #[command(flatten)]
-    pub out: PhaseOutput,
+    pub out: OutputArgs,
 }
 
 /// `spinball kac`.
@@ -50,6 +56,8 @@ pub struct KacArgs {
 pub fn kac(args: &KacArgs) -> Result<(), CliError> {
     let p = &args.phase;
     let (table, law, threads) = p.setup()?;
+    let shard = args.shard.unwrap_or(Shard::WHOLE);
+    let shard_path = args.out.shard_path(shard)?;
     args.out.check()?;
     let (v0, v1) = args.v_par.unwrap_or((-1.0, 1.0));
     let mut region = SectionBox::new(args.s.0..args.s.1, v0..v1);
@@ -57,18 +65,37 @@ pub fn kac(args: &KacArgs) -> Result<(), CliError> {
         region = region.with_w(w0..w1);
     }
     let billiard = Billiard::new(table, law);
-    let kac = kac_comparison(
+    let part = kac_part(
         &billiard,
         &region,
         args.orbits,
         args.collisions,
         p.seed,
         threads,
+        shard,
     )
     .map_err(|e| match e {
         AnalysisError::InvalidOption { .. } => CliError::usage(e),
         e => CliError::failed(e),
     })?;
+    let Some(path) = shard_path else {
+        let doc = KacPartialDocument::merge(vec![KacPartialDocument { part }])
+            .map_err(CliError::failed)?;
+        return write_kac(&doc, &args.out);
+    };
+    let done = format!("orbits {:?} of {}", part.starts, args.orbits);
+    let doc = Document::KacPartial(KacPartialDocument { part });
+    args.out.write_shard(path, &doc, shard, &done)
+}
+
+/// Write the finished comparison `doc` to the outputs asked for and print
+/// a summary unless quiet: the one way a whole run and `spinball merge`
+/// write it.
+///
+/// # Errors
+/// [`CliError::Failed`] for an output that cannot be written.
+pub fn write_kac(doc: &KacDocument, out: &OutputArgs) -> Result<(), CliError> {
+    let kac = &doc.comparison;
     let rows: Vec<[f64; 4]> = kac
         .orbits
         .iter()
@@ -77,15 +104,6 @@ pub fn kac(args: &KacArgs) -> Result<(), CliError> {
             [o.index as f64, o.visits as f64, m, m / kac.expected]
         })
         .collect();
-    let doc = || {
-        Document::Kac(KacDocument::new(
-            billiard.table(),
-            &law,
-            p.seed,
-            args.collisions,
-            kac.clone(),
-        ))
-    };
     let csv = || {
         let mut out = String::from("index,collisions,visits,mean_return,ratio\n");
         for o in &kac.orbits {
@@ -105,8 +123,8 @@ pub fn kac(args: &KacArgs) -> Result<(), CliError> {
             rows.iter().flatten().copied().collect(),
         )
     };
-    args.out.write(doc, csv, npy)?;
-    if args.out.quiet {
+    out.write(|| Document::Kac(doc.clone()), csv, npy)?;
+    if out.quiet {
         return Ok(());
     }
     let ratio = kac

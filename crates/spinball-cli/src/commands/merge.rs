@@ -1,26 +1,32 @@
 //! `spinball merge`: the shards of a run, combined into the result one
 //! unsharded run gives, bitwise. The comparison and the joining are the
-//! library's (`PartialDocument::merge`, `SpectrumDocument::merge`); this
+//! library's (`PartialDocument::merge`, `SpectrumDocument::merge`,
+//! `FtleMapPart::merge`, `SectionPartialDocument::merge`,
+//! `KacPartialDocument::merge`); this
 //! command reads the files and names them in every refusal.
 
 use std::path::{Path, PathBuf};
 
 use clap::Args;
-use spinball_analysis::report::{Document, PartialDocument, SpectrumDocument};
+use spinball_analysis::report::{
+    Document, KacPartialDocument, PartialDocument, SectionPartialDocument, SpectrumDocument,
+};
 use spinball_analysis::run::MergeError;
 
 use crate::commands::ftle_map::merge_maps;
+use crate::commands::kac::write_kac;
+use crate::commands::section::write_section;
 use crate::commands::spectrum::write_spectrum;
 use crate::documents::read_document;
 use crate::error::CliError;
 use crate::output::OutputArgs;
-use crate::phase_args::PhaseOutput;
 
 /// The arguments of `spinball merge`.
 #[derive(Debug, Clone, Args)]
 pub struct MergeArgs {
     /// The partial results (the --json files of every shard of a
-    /// `lyapunov`, `ftle`, `spectrum` or `ftle-map` run), in any order.
+    /// `lyapunov`, `ftle`, `spectrum`, `ftle-map`, `section` or `kac` run),
+    /// in any order.
     #[arg(required = true)]
     pub parts: Vec<PathBuf>,
     #[command(flatten)]
@@ -48,6 +54,37 @@ fn different(first: &Path, path: &Path, e: MergeError) -> CliError {
             path.display()
         )),
     }
+}
+
+/// The shards of one kind: `first` (read from the first file) and those of
+/// the other files, each of which must be of `first`'s kind (`pick`).
+///
+/// # Errors
+/// [`CliError::Usage`] naming a file that cannot be read or is of another
+/// kind.
+fn gather<T>(
+    args: &MergeArgs,
+    first: T,
+    pick: impl Fn(Document) -> Result<T, &'static str>,
+) -> Result<Vec<T>, CliError> {
+    let mut parts = vec![first];
+    for path in &args.parts[1..] {
+        let part = pick(read_document(path)?).map_err(|kind| {
+            CliError::Usage(format!(
+                "{} is a `{kind}`, not a shard like {}",
+                path.display(),
+                args.parts[0].display()
+            ))
+        })?;
+        parts.push(part);
+    }
+    Ok(parts)
+}
+
+/// A refused merge of the files of `args`, with the library's reason.
+fn refused(args: &MergeArgs, e: &MergeError) -> CliError {
+    let files: Vec<String> = args.parts.iter().map(|p| p.display().to_string()).collect();
+    CliError::Usage(format!("cannot merge {}: {e}", files.join(", ")))
 }
 
 /// `spinball merge`.
@@ -99,14 +136,22 @@ pub fn merge(args: &MergeArgs) -> Result<(), CliError> {
             let merged = SpectrumDocument::merge(&docs).map_err(CliError::usage)?;
             write_spectrum(&merged, &args.out)
         }
-        Document::FtleMapPartial(first) => {
-            let out = PhaseOutput {
-                json: args.out.json.clone(),
-                csv: args.out.csv.clone(),
-                npy: args.out.npy.clone(),
-                quiet: args.out.quiet,
-            };
-            merge_maps(first.part, &args.parts[1..], &out)
+        Document::FtleMapPartial(first) => merge_maps(first.part, &args.parts[1..], &args.out),
+        Document::SectionPartial(first) => {
+            let parts = gather(args, first, |d| match d {
+                Document::SectionPartial(p) => Ok(p),
+                other => Err(other.kind()),
+            })?;
+            let doc = SectionPartialDocument::merge(parts).map_err(|e| refused(args, &e))?;
+            write_section(&doc, &args.out)
+        }
+        Document::KacPartial(first) => {
+            let parts = gather(args, first, |d| match d {
+                Document::KacPartial(p) => Ok(p),
+                other => Err(other.kind()),
+            })?;
+            let doc = KacPartialDocument::merge(parts).map_err(|e| refused(args, &e))?;
+            write_kac(&doc, &args.out)
         }
         other => Err(CliError::Usage(format!(
             "{} is not a partial result (its kind is `{}`); merge the --json files of sharded runs",

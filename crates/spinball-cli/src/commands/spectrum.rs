@@ -5,7 +5,7 @@ use clap::Args;
 use spinball_analysis::AnalysisError;
 use spinball_analysis::estimators::SpectrumOptions;
 use spinball_analysis::report::{Document, SpectrumDocument, csv_text};
-use spinball_analysis::run::{TableRecord, spectrum_ensemble};
+use spinball_analysis::run::{SpectrumDefaults, TableRecord, spectrum_ensemble};
 use spinball_core::Billiard;
 
 use crate::documents::write_document;
@@ -20,7 +20,7 @@ pub struct SpectrumArgs {
     #[command(flatten)]
     pub run: RunArgs,
     /// Re-orthonormalise the tangent vectors every this many collisions.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = SpectrumDefaults::QR_INTERVAL)]
     pub qr_interval: u32,
     #[command(flatten)]
     pub out: OutputArgs,

@@ -4,8 +4,8 @@ use std::path::PathBuf;
 
 use clap::Args;
 use spinball_analysis::diagnostics::{COLLISION_COLUMNS, collision_log};
-use spinball_analysis::run::Starts;
-use spinball_core::{Billiard, Sampler, SpinLaw, State};
+use spinball_analysis::run::{RunDefaults, Starts};
+use spinball_core::{Billiard, SpinLaw, State};
 use spinball_geometry::DVec2;
 
 use crate::error::CliError;
@@ -44,10 +44,10 @@ pub struct TrajectoryArgs {
     #[arg(long, default_value_t = 0)]
     pub index: u64,
     /// Seed of the drawn start.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = RunDefaults::SEED)]
     pub seed: u64,
     /// Sampler of the drawn start.
-    #[arg(long, value_enum, default_value_t = SamplerArg::Paper)]
+    #[arg(long, value_enum, default_value_t = RunDefaults::SAMPLER.into())]
     pub sampler: SamplerArg,
     /// Write CSV here (default: stdout).
     #[arg(long)]
@@ -88,11 +88,7 @@ pub fn trajectory(args: &TrajectoryArgs) -> Result<(), CliError> {
     let start = match (&args.position, &args.velocity) {
         (Some(p), Some(v)) => State::new(pair(p, "position")?, pair(v, "velocity")?, args.spin),
         (None, None) => {
-            let sampler = match args.sampler {
-                SamplerArg::Paper => Sampler::Paper,
-                SamplerArg::Microcanonical => Sampler::Microcanonical,
-            };
-            Starts::Sampled(sampler)
+            Starts::Sampled(args.sampler.into())
                 .draw(&table, &law, args.seed, args.index)
                 .map_err(CliError::usage)?
                 .0

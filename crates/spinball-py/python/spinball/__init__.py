@@ -21,9 +21,16 @@ Pictures: ``spinball.plot`` draws tables, trajectories coloured by spin,
 sections, FTLE maps and λ(α) with error bars on matplotlib (the optional
 ``plot`` extra; ``import spinball`` alone does not import matplotlib).
 
-Tables: ``Circle(radius=1)``, ``Rectangle(l=1, h=1)``, ``Stadium(a=1)``,
-``Sinai(l=2, r=1)``, ``SegmentTable(outer, holes)`` from ``Line`` and
+Tables: ``Circle(R=1)``, ``Rectangle(L=1, H=1)``, ``Stadium(a=1)``,
+``Sinai(L=2, R=1)`` (the keywords of the spec strings ``circle:R=1``,
+``rectangle:L=1,H=1``, ``stadium:a=1``, ``sinai:L=2,R=1``), ``SegmentTable(outer, holes)`` from ``Line`` and
 ``Arc`` walls (or ``SegmentTable.polygon(vertices)``), ``table("stadium:a=1")``.
+
+Defaults are those of the library and of the ``spinball`` command line
+(seed 0, the paper's sampler and finite-difference method, 1000 initial
+conditions of 10 000 collisions, threshold 0.01; docs/DEFAULTS.md lists
+them all with the parameter names of every front), so the same run gives
+the same numbers from Python, Rust and the shell.
 
 Errors: invalid input raises ``ValueError`` with the Rust message, a run
 that fails ``RuntimeError``; Ctrl-C during a run raises

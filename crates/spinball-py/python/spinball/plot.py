@@ -88,7 +88,7 @@ def table(table, ax=None, *, edgecolor="black", linewidth=1.5):
 
     Examples
     --------
-    >>> ax = plot.table(spinball.Sinai(l=2, r=1))
+    >>> ax = plot.table(spinball.Sinai(L=2, R=1))
     """
     from matplotlib.patches import Polygon
 
