@@ -95,6 +95,7 @@
 
 pub mod diagnostics;
 pub mod estimators;
+pub mod open;
 pub mod orbits;
 pub mod phase_space;
 pub mod precision;
