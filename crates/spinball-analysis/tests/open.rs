@@ -194,3 +194,21 @@ fn the_square_lorentz_gas_has_the_lyapunov_exponent_of_the_sinai_cell() {
         .run();
     assert!(fd.is_err(), "{fd:?}");
 }
+
+#[test]
+fn the_lane_engine_refuses_open_tables() {
+    use spinball_lanes::{LaneBilliard, LanesError, has_lane_form};
+    let law = SpinLaw::new(0.5).unwrap();
+    let closed = SegmentTable::new(stadium_with_hole().walls().to_vec()).unwrap();
+    assert!(has_lane_form(&closed));
+    for open in [
+        stadium_with_hole(),
+        LorentzGas::square(1.0, 0.3).unwrap().table().unwrap(),
+    ] {
+        assert!(!has_lane_form(&open));
+        assert!(matches!(
+            LaneBilliard::new(open, law),
+            Err(LanesError::OpenTable)
+        ));
+    }
+}
