@@ -112,11 +112,11 @@ impl SegmentTable {
         let mut start = 0;
         for len in std::iter::once(self.outer().len()).chain(self.holes().iter().map(|h| h.len())) {
             let mut lp = Vec::with_capacity(len + added);
-            for j in start..start + len {
+            for (j, w) in walls.iter().enumerate().skip(start).take(len) {
                 if j == split {
                     lp.extend(pieces.iter().map(|p| p.0));
                 } else {
-                    lp.push(walls[j]);
+                    lp.push(*w);
                 }
             }
             loops.push(lp);
