@@ -101,6 +101,7 @@ pub mod animation;
 pub mod diagnostics;
 pub mod escape;
 pub mod estimators;
+pub mod open;
 pub mod orbits;
 pub mod phase_space;
 pub mod precision;

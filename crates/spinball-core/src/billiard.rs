@@ -5,11 +5,13 @@ use spinball_geometry::{Boundary, Hit};
 
 use crate::collision::Collision;
 use crate::error::{LaunchError, StepError};
+use crate::event::{Crossing, Event, Exit};
 use crate::observer::Observer;
 use crate::spin_law::SpinLaw;
 use crate::state::{Ball, State};
 use crate::stuck::watch_zero_time;
 use crate::tangent::{Jacobian, TangentFrame, TangentVector};
+use spinball_geometry::WallKind;
 
 /// A spinning billiard: a table `B` and a [`SpinLaw`]. Generic over the table
 /// so every step is statically dispatched and allocation-free.
@@ -95,6 +97,116 @@ impl<B: Boundary> Billiard<B> {
         }
     }
 
+    /// The next reflecting wall: the cast's hit on a closed table (the one
+    /// test of its kind, a constant for the built-in tables, is all this
+    /// adds to a step); on an open table, the flight through periodic
+    /// walls to it (time summed), or [`StepError::Escaped`].
+    #[inline]
+    fn fly(&self, ball: &mut Ball) -> Result<Hit, StepError> {
+        let hit = self.next_hit(&ball.state)?;
+        if self.table.wall_kind(hit.wall).is_reflecting() {
+            return Ok(hit);
+        }
+        self.fly_open(ball, hit)
+    }
+
+    /// [`fly`](Self::fly) past a hole or periodic wall (kept out of the
+    /// closed tables' hot path).
+    #[cold]
+    #[inline(never)]
+    fn fly_open(&self, ball: &mut Ball, mut hit: Hit) -> Result<Hit, StepError> {
+        let start = *ball;
+        let mut time = 0.0;
+        loop {
+            match self.pass(ball, hit)? {
+                Passage::Crossed(c) => time += c.time,
+                Passage::Escaped(exit) => {
+                    *ball = start;
+                    return Err(StepError::Escaped(Exit {
+                        time: time + exit.time,
+                        ..exit
+                    }));
+                }
+            }
+            hit = self.next_hit(&ball.state)?;
+            if self.table.wall_kind(hit.wall).is_reflecting() {
+                hit.time += time;
+                return Ok(hit);
+            }
+        }
+    }
+
+    /// Pass the ball through the open wall of `hit`: into the next cell
+    /// (a crossing) or out of the table (an escape; the ball is left at
+    /// the hole).
+    fn pass(&self, ball: &mut Ball, hit: Hit) -> Result<Passage, StepError> {
+        let zero_run = watch_zero_time(ball, &hit)?;
+        Ok(match self.table.wall_kind(hit.wall) {
+            WallKind::Periodic {
+                partner,
+                shift,
+                step,
+            } => {
+                let point = hit.point - shift;
+                ball.state.position = point;
+                ball.cell = ball.cell.moved(step);
+                ball.zero_run = zero_run;
+                Passage::Crossed(Crossing {
+                    time: hit.time,
+                    wall: hit.wall,
+                    partner,
+                    point,
+                    cell: ball.cell,
+                })
+            }
+            WallKind::Hole | WallKind::Reflecting => {
+                ball.state.position = hit.point;
+                Passage::Escaped(Exit {
+                    time: hit.time,
+                    wall: hit.wall,
+                    point: hit.point,
+                    s: hit.s(),
+                    v_par: ball.state.velocity.dot(hit.tangent()),
+                    spin: ball.state.spin,
+                })
+            }
+        })
+    }
+
+    /// Fly to the next wall and do what it does: collide, cross into the
+    /// next cell, or escape ([`Event`]). On a closed table every event is
+    /// a collision, as [`step`](Self::step) takes it; a hole-free table
+    /// never reports an escape. After an escape the ball sits at the hole
+    /// with the velocity and spin it left with; advancing it again is a
+    /// caller's error (it would fly on out of the table).
+    ///
+    /// # Errors
+    /// As [`step`](Self::step), but an escape is an [`Event::Escape`], not
+    /// an error.
+    #[inline]
+    pub fn advance(&self, ball: &mut Ball) -> Result<Event, StepError> {
+        let hit = self.next_hit(&ball.state)?;
+        if !self.table.wall_kind(hit.wall).is_reflecting() {
+            return Ok(match self.pass(ball, hit)? {
+                Passage::Crossed(c) => Event::Crossing(c),
+                Passage::Escaped(e) => Event::Escape(e),
+            });
+        }
+        self.collide(ball, hit).map(Event::Collision)
+    }
+
+    /// The ball's unwrapped position on a periodic table: its cell's
+    /// lattice offset plus its position in the cell (the cell is an exact
+    /// integer count, so this is exact to the rounding of one sum). On any
+    /// other table, its position.
+    #[must_use]
+    pub fn unwrapped(&self, ball: &Ball) -> DVec2 {
+        match self.table.lattice() {
+            Some(basis) => ball.cell.offset(basis) + ball.state.position,
+            None => ball.state.position,
+        }
+    }
+
     /// Apply the law at `hit` and put the velocity back on the ball's shell.
     #[inline]
     fn reflect(&self, ball: &Ball, hit: &Hit) -> (DVec2, f64) {
@@ -132,9 +244,22 @@ impl<B: Boundary> Billiard<B> {
     /// ball is stuck ([`StepError::Stuck`]: more than
     /// [`MAX_ZERO_TIME_RUN`](crate::MAX_ZERO_TIME_RUN) zero-time collisions
     /// in a row); the ball is left unchanged then.
+    ///
+    /// On a periodic table the ball flies through periodic walls on the
+    /// way (its [`cell`](Ball::cell) counted, no collision), and the
+    /// collision's flight time is the whole flight since the last
+    /// collision; on a table with holes, reaching a hole is
+    /// [`StepError::Escaped`] (the ball left as it was). [`advance`](Self::advance)
+    /// reports crossings and escapes as events instead.
     #[inline]
     pub fn step(&self, ball: &mut Ball) -> Result<Collision, StepError> {
-        let hit = self.next_hit(&ball.state)?;
+        let hit = self.fly(ball)?;
+        self.collide(ball, hit)
+    }
+
+    /// Collide at the reflecting wall of `hit`.
+    #[inline]
+    fn collide(&self, ball: &mut Ball, hit: Hit) -> Result<Collision, StepError> {
         let zero_run = watch_zero_time(ball, &hit)?;
         let (v, u) = self.reflect(ball, &hit);
         let before = ball.state;
@@ -178,7 +303,9 @@ impl<B: Boundary> Billiard<B> {
         ball: &mut Ball,
         tangents: &mut [TangentVector],
     ) -> Result<Collision, StepError> {
-        let hit = self.next_hit(&ball.state)?;
+        // A crossing translates the ball and leaves tangent vectors as they
+        // are, so the flight through periodic walls is one free flight.
+        let hit = self.fly(ball)?;
         let zero_run = watch_zero_time(ball, &hit)?;
         let (v, u) = self.reflect(ball, &hit);
         let before = ball.state;
@@ -211,6 +338,12 @@ impl<B: Boundary> Billiard<B> {
         }
         Ok((c, Jacobian(j)))
     }
+}
+
+/// A pass through an open wall: into the next cell, or out of the table.
+enum Passage {
+    Crossed(Crossing),
+    Escaped(Exit),
 }
 
 fn unit(i: usize) -> [f64; 5] {

@@ -3,6 +3,8 @@
 use glam::DVec2;
 use thiserror::Error;
 
+use crate::event::Exit;
+
 /// An invalid spin parameter α.
 #[derive(Debug, Clone, Copy, PartialEq, Error)]
 #[non_exhaustive]
@@ -119,6 +121,12 @@ pub enum StepError {
         /// Position at the start of the step.
         position: DVec2,
     },
+    /// The ball reached a hole and left the table before its next
+    /// collision (only on a table with holes; use
+    /// [`Billiard::advance`](crate::Billiard::advance) to see escapes as
+    /// events rather than errors).
+    #[error("the ball left the table through hole wall {} at ({}, {})", .0.wall, .0.point.x, .0.point.y)]
+    Escaped(Exit),
 }
 
 /// A sampler that finds no room in the table: no point of the

@@ -38,6 +38,7 @@ pub mod billiard;
 pub mod collision;
 pub mod direction;
 pub mod error;
+pub mod event;
 pub mod observer;
 pub mod perturbation;
 pub mod sampler;
@@ -51,6 +52,7 @@ pub use billiard::{Billiard, Run};
 pub use collision::Collision;
 pub use direction::random_direction;
 pub use error::{LaunchError, NoRoom, PerturbationError, SpinLawError, StepError};
+pub use event::{Crossing, Event, Exit};
 pub use observer::{EnergyMonitor, Observer, Recorder};
 pub use perturbation::{MAX_DELTA0, MIN_DELTA0, Perturbation};
 pub use sampler::{PAPER_SHRINK, PAPER_SPIN_FRACTION, Sampler, UnknownSampler, ic_rng};
@@ -61,4 +63,4 @@ pub use tangent::{Jacobian, MAX_QR_INTERVAL, TangentFrame, TangentVector, tangen
 pub use units::Units;
 
 pub use rand_pcg::Pcg64;
-pub use spinball_geometry::{Boundary, Hit};
+pub use spinball_geometry::{Boundary, Cell, Hit, WallKind};

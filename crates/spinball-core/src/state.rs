@@ -2,6 +2,7 @@
 //! shell.
 
 use glam::DVec2;
+use spinball_geometry::Cell;
 
 use crate::error::LaunchError;
 use crate::spin_law::SpinLaw;
@@ -92,6 +93,10 @@ pub struct Ball {
     pub(crate) inv_shell: f64,
     /// Zero-time collisions in a row just taken (see `StepError::Stuck`).
     pub(crate) zero_run: u32,
+    /// The lattice cell of a ball on a periodic table (the origin on any
+    /// other table).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub(crate) cell: Cell,
 }
 
 impl Ball {
@@ -124,6 +129,7 @@ impl Ball {
             state,
             inv_shell: 1.0 / norm2,
             zero_run: 0,
+            cell: Cell::ORIGIN,
         })
     }
 
@@ -146,6 +152,14 @@ impl Ball {
     #[inline]
     pub fn spin(&self) -> f64 {
         self.state.spin
+    }
+    /// The lattice cell the ball is in on a periodic table (integer
+    /// coordinates in the table's lattice basis, counted exactly at every
+    /// crossing); the origin cell on any other table. See
+    /// [`Billiard::unwrapped`](crate::Billiard::unwrapped).
+    #[inline]
+    pub fn cell(&self) -> Cell {
+        self.cell
     }
     /// The energy the ball was launched with.
     pub fn launch_energy(&self) -> f64 {

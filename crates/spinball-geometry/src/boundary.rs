@@ -11,8 +11,9 @@ use glam::DVec2;
 use rand::Rng;
 
 pub use crate::aabb::Aabb;
-use crate::hit::Hit;
+use crate::hit::{Hit, WallId};
 use crate::shape::Shape;
+use crate::wall_kind::WallKind;
 
 /// How many candidates [`Boundary::try_sample_interior`] draws from the
 /// bounding box before it gives up: 2²², a fraction of a second. A table
@@ -218,6 +219,32 @@ pub trait Boundary {
         None
     }
 
+    /// What wall `wall` does to a ball that reaches it: reflect it, let it
+    /// out (a hole) or pass it to its periodic partner.
+    ///
+    /// Default: [`WallKind::Reflecting`] for every wall (a closed table).
+    /// [`SegmentTable`](crate::SegmentTable) returns the kinds it was
+    /// given; a wrapper around a table must forward it, or its holes and
+    /// periodic walls turn into mirrors.
+    #[inline]
+    fn wall_kind(&self, wall: WallId) -> WallKind {
+        let _ = wall;
+        WallKind::Reflecting
+    }
+
+    /// The lattice basis `[b₁, b₂]` of a periodic table: a ball's
+    /// [`Cell`](crate::Cell) `(i, j)` sits at `i·b₁ + j·b₂`. `None` for a
+    /// table without periodic walls (the default); forward it in wrappers.
+    fn lattice(&self) -> Option<[DVec2; 2]> {
+        None
+    }
+
+    /// Whether any wall is a hole (a ball can leave the table). Default:
+    /// `false`; forward it in wrappers.
+    fn has_holes(&self) -> bool {
+        false
+    }
+
     /// The Birkhoff coordinates `(s, v∥)` of a hit for a ball arriving with
     /// `velocity` (paper §II.B): arc length and tangential velocity.
     fn birkhoff(&self, hit: &Hit, velocity: DVec2) -> (f64, f64) {
@@ -273,6 +300,16 @@ impl<B: Boundary> Boundary for &B {
     }
     fn hit_at(&self, s: f64) -> Option<Hit> {
         (**self).hit_at(s)
+    }
+    #[inline]
+    fn wall_kind(&self, wall: WallId) -> WallKind {
+        (**self).wall_kind(wall)
+    }
+    fn lattice(&self) -> Option<[DVec2; 2]> {
+        (**self).lattice()
+    }
+    fn has_holes(&self) -> bool {
+        (**self).has_holes()
     }
 }
 

@@ -193,6 +193,71 @@ pub enum GeometryError {
         /// Signed area enclosed by the loop (positive = counter-clockwise).
         area: f64,
     },
+    /// A wall kind was given for a wall the table does not have.
+    #[error("wall {wall} does not exist: the table has walls 0..{walls}")]
+    NoSuchWall {
+        /// The wall id given.
+        wall: u32,
+        /// Number of walls of the table.
+        walls: usize,
+    },
+    /// A wall was made a hole or periodic, but it already is a hole or
+    /// periodic: holes may not overlap each other or a periodic wall.
+    #[error(
+        "wall {wall} cannot be made {wanted}: it is already {current} (a hole may not overlap another hole or a periodic wall; split the wall to give its parts different kinds)"
+    )]
+    KindOverlap {
+        /// The wall.
+        wall: u32,
+        /// What it was asked to become (`a hole`, `periodic`).
+        wanted: &'static str,
+        /// What it is (`a hole`, `periodic`).
+        current: &'static str,
+    },
+    /// Two walls given as periodic partners are not translates of each other
+    /// facing each other across the table.
+    #[error(
+        "walls {a} and {b} cannot be periodic partners: {why} (partners are straight walls of equal length, parallel with opposite inward normals, each the other's translate, facing each other across the table; mismatch {mismatch:e})"
+    )]
+    NotPartners {
+        /// First wall.
+        a: u32,
+        /// Second wall.
+        b: u32,
+        /// What is wrong.
+        why: &'static str,
+        /// How far from a translate (a length; 0 if not a length test).
+        mismatch: f64,
+    },
+    /// The translations of a table's periodic walls are not integer
+    /// combinations of two lattice vectors, so a ball's cell could not be
+    /// kept as integers.
+    #[error(
+        "the translation ({x}, {y}) of periodic wall {wall} is not an integer combination of the lattice basis taken from the first two non-parallel translations: its cell could not be counted exactly"
+    )]
+    NotALattice {
+        /// The periodic wall.
+        wall: u32,
+        /// Its translation, x.
+        x: f64,
+        /// Its translation, y.
+        y: f64,
+    },
+    /// A periodic cell's obstacle fills it: no room is left for the ball,
+    /// or the obstacles of neighbouring cells touch.
+    #[error(
+        "a disk of radius R = {r} does not fit a lattice of spacing w = {w}: R must lie in (0, {max}) ({why})"
+    )]
+    NoRoom {
+        /// Disk radius.
+        r: f64,
+        /// Lattice spacing.
+        w: f64,
+        /// Largest radius (exclusive) that leaves room.
+        max: f64,
+        /// Why.
+        why: &'static str,
+    },
 }
 
 /// Smallest length a table accepts: lengths and speeds (at least

@@ -48,6 +48,8 @@ pub mod hit;
 pub mod line;
 mod loop_check;
 pub mod outline;
+pub mod lorentz;
+mod opening;
 mod positive_part;
 pub mod rectangle;
 pub mod segment;
@@ -59,6 +61,7 @@ pub mod table;
 #[cfg(feature = "table-file")]
 #[cfg_attr(docsrs, doc(cfg(feature = "table-file")))]
 pub mod table_file;
+pub mod wall_kind;
 
 pub use aabb::Aabb;
 pub use arc::{ArcSegment, cast_concave_circle, cast_convex_circle};
@@ -68,6 +71,7 @@ pub use error::GeometryError;
 pub use hit::{Hit, WallId, tangent_of};
 pub use line::{Approach, LineSegment, WallHit, cast_line};
 pub use outline::{ARC_POINTS_PER_TURN, Loop, Outline, ToOutline};
+pub use lorentz::{Horizon, Lattice, LorentzGas};
 pub use rectangle::Rectangle;
 pub use segment::Segment;
 pub use segment_table::{FlatVisit, SegmentTable};
@@ -76,6 +80,7 @@ pub use sinai::Sinai;
 pub use stadium::Stadium;
 pub use table::{Built, Table, TableSpecError, TableVisitor};
 #[cfg(feature = "table-file")]
-pub use table_file::{TableFile, TableFileError, WallSpec};
+pub use table_file::{Opening, TableFile, TableFileError, WallSpec};
+pub use wall_kind::{Cell, WallKind};
 
 pub use glam::DVec2;

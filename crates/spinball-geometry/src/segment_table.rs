@@ -46,6 +46,7 @@ use crate::line::{Approach, LineSegment};
 use crate::loop_check::check_loops;
 use crate::segment::Segment;
 use crate::shape::Shape;
+use crate::wall_kind::{Cell, WallKind};
 
 /// A table bounded by user-given walls. See the [module docs](self).
 ///
@@ -72,6 +73,19 @@ pub struct SegmentTable {
         serde(default, skip_serializing_if = "Option::is_none")
     )]
     name: Option<String>,
+    /// What each wall does ([`WallKind`]), in id order; empty for a closed
+    /// table (every wall reflects).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Vec::is_empty")
+    )]
+    kinds: Vec<WallKind>,
+    /// The lattice basis of the periodic walls' translations.
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    lattice: Option<[DVec2; 2]>,
 }
 
 /// One step of the order in which [`SegmentTable`]'s cast visits its flat
@@ -292,6 +306,8 @@ impl SegmentTable {
             slack,
             visits,
             name: None,
+            kinds: Vec::new(),
+            lattice: None,
         })
     }
 
@@ -389,6 +405,171 @@ impl SegmentTable {
         self.walls
             .iter()
             .any(|w| distance_to_wall(w, p, self.slack) <= self.slack)
+    }
+
+    /// What each wall does, in id order (every wall [`WallKind::Reflecting`]
+    /// unless made a hole or periodic).
+    #[must_use]
+    pub fn kinds(&self) -> Vec<WallKind> {
+        (0..self.walls.len())
+            .map(|i| self.wall_kind(i as WallId))
+            .collect()
+    }
+
+    /// The same table with wall `wall` a hole: a ball reaching it leaves
+    /// the table. A hole is a whole wall; to open part of a wall, build the
+    /// table with that wall split where the hole begins and ends.
+    ///
+    /// # Errors
+    /// [`GeometryError::NoSuchWall`], and [`GeometryError::KindOverlap`] if
+    /// the wall is already a hole or periodic.
+    pub fn with_hole(mut self, wall: WallId) -> Result<Self, GeometryError> {
+        self.check_free(wall, "a hole")?;
+        self.kinds_mut()[wall as usize] = WallKind::Hole;
+        Ok(self)
+    }
+
+    /// The same table with walls `a` and `b` periodic partners: a ball
+    /// leaving through one re-enters through the other, one lattice cell on.
+    ///
+    /// # Errors
+    /// [`GeometryError::NoSuchWall`], [`GeometryError::KindOverlap`] if
+    /// either is already a hole or periodic, [`GeometryError::NotPartners`]
+    /// unless both are straight walls of equal length, each the other's
+    /// translate (to the walls' tolerance, [`slack`](Self::slack)) with
+    /// opposite inward normals, facing each other across the table, and
+    /// [`GeometryError::NotALattice`] if the table's translations are no
+    /// longer integer combinations of two lattice vectors.
+    pub fn with_periodic(mut self, a: WallId, b: WallId) -> Result<Self, GeometryError> {
+        self.check_free(a, "periodic")?;
+        self.check_free(b, "periodic")?;
+        let not = |why, mismatch| GeometryError::NotPartners {
+            a,
+            b,
+            why,
+            mismatch,
+        };
+        if a == b {
+            return Err(not("a wall cannot be its own partner", 0.0));
+        }
+        let (Segment::Line(wa), Segment::Line(wb)) =
+            (self.walls[a as usize], self.walls[b as usize])
+        else {
+            return Err(not("a periodic wall must be straight", 0.0));
+        };
+        // Both walls run counter-clockwise about the table, so the
+        // translate of a's start is b's end.
+        let shift = wa.start() - wb.end();
+        let mismatch = (wa.end() - shift - wb.start()).length();
+        if (wa.length() - wb.length()).abs() > self.slack || mismatch > self.slack {
+            return Err(not(
+                "they are not translates of each other (different lengths or directions)",
+                mismatch.max((wa.length() - wb.length()).abs()),
+            ));
+        }
+        if wa.normal().dot(shift) >= 0.0 {
+            return Err(not(
+                "they do not face each other across the table (each one's inward normal must point towards the other)",
+                0.0,
+            ));
+        }
+        let kinds = self.kinds_mut();
+        kinds[a as usize] = WallKind::Periodic {
+            partner: b,
+            shift,
+            step: Cell::ORIGIN,
+        };
+        kinds[b as usize] = WallKind::Periodic {
+            partner: a,
+            shift: -shift,
+            step: Cell::ORIGIN,
+        };
+        self.relattice()?;
+        Ok(self)
+    }
+
+    /// The kinds, filled in with `Reflecting` on first use.
+    fn kinds_mut(&mut self) -> &mut Vec<WallKind> {
+        if self.kinds.len() != self.walls.len() {
+            self.kinds = vec![WallKind::Reflecting; self.walls.len()];
+        }
+        &mut self.kinds
+    }
+
+    /// Refuse a wall that does not exist or already has a kind.
+    fn check_free(&self, wall: WallId, wanted: &'static str) -> Result<(), GeometryError> {
+        if wall as usize >= self.walls.len() {
+            return Err(GeometryError::NoSuchWall {
+                wall,
+                walls: self.walls.len(),
+            });
+        }
+        let current = match self.wall_kind(wall) {
+            WallKind::Reflecting => return Ok(()),
+            WallKind::Hole => "a hole",
+            WallKind::Periodic { .. } => "periodic",
+        };
+        Err(GeometryError::KindOverlap {
+            wall,
+            wanted,
+            current,
+        })
+    }
+
+    /// Take the lattice basis from the periodic translations (the first,
+    /// then the first not parallel to it) and give every periodic wall its
+    /// step in that basis.
+    fn relattice(&mut self) -> Result<(), GeometryError> {
+        let shifts: Vec<(usize, DVec2)> = self
+            .kinds
+            .iter()
+            .enumerate()
+            .filter_map(|(i, k)| match k {
+                WallKind::Periodic { shift, .. } => Some((i, *shift)),
+                _ => None,
+            })
+            .collect();
+        // b1: the translation closest in direction to +x (ties: towards
+        // +y); b2: the one making the smallest counter-clockwise angle with
+        // it, so that a square cell gets (w, 0), (0, w).
+        let cos = |a: DVec2, b: DVec2| a.dot(b) / (a.length() * b.length());
+        let Some(b1) = shifts.iter().map(|&(_, s)| s).reduce(|best, s| {
+            let (c, cb) = (cos(s, DVec2::X), cos(best, DVec2::X));
+            if c > cb || (c == cb && s.y > best.y) {
+                s
+            } else {
+                best
+            }
+        }) else {
+            self.lattice = None;
+            return Ok(());
+        };
+        let b2 = shifts
+            .iter()
+            .map(|&(_, s)| s)
+            .filter(|s| b1.perp_dot(*s) > 1e-6 * b1.length() * s.length())
+            .reduce(|best, s| if cos(s, b1) > cos(best, b1) { s } else { best })
+            .unwrap_or_else(|| b1.perp());
+        let det = b1.perp_dot(b2);
+        for (i, shift) in shifts {
+            // Cramer's rule for shift = x b1 + y b2.
+            let x = shift.perp_dot(b2) / det;
+            let y = b1.perp_dot(shift) / det;
+            let step = Cell::new(x.round() as i64, y.round() as i64);
+            let off = (step.offset([b1, b2]) - shift).length();
+            if off > 4.0 * self.slack {
+                return Err(GeometryError::NotALattice {
+                    wall: i as WallId,
+                    x: shift.x,
+                    y: shift.y,
+                });
+            }
+            if let WallKind::Periodic { step: s, .. } = &mut self.kinds[i] {
+                *s = step;
+            }
+        }
+        self.lattice = Some([b1, b2]);
+        Ok(())
     }
 
     /// The order in which [`cast`](Boundary::cast) visits the flat walls:
@@ -626,10 +807,32 @@ impl Boundary for SegmentTable {
     }
 
     fn shape(&self) -> Option<Shape> {
+        let closed = self.kinds.iter().all(WallKind::is_reflecting);
         Some(Shape::Segments {
             outer: self.outer().to_vec(),
             holes: self.holes().into_iter().map(<[Segment]>::to_vec).collect(),
             name: self.name.clone(),
+            kinds: if closed {
+                Vec::new()
+            } else {
+                self.kinds.clone()
+            },
         })
+    }
+
+    #[inline]
+    fn wall_kind(&self, wall: WallId) -> WallKind {
+        self.kinds
+            .get(wall as usize)
+            .copied()
+            .unwrap_or(WallKind::Reflecting)
+    }
+
+    fn lattice(&self) -> Option<[DVec2; 2]> {
+        self.lattice
+    }
+
+    fn has_holes(&self) -> bool {
+        self.kinds.iter().any(WallKind::is_hole)
     }
 }

@@ -23,6 +23,7 @@
 use std::fmt;
 
 use crate::segment::Segment;
+use crate::wall_kind::WallKind;
 
 /// A table as data: the parameters of a built-in table or the walls of a
 /// table built from segments.
@@ -67,6 +68,14 @@ pub enum Shape {
             serde(default, skip_serializing_if = "Option::is_none")
         )]
         name: Option<String>,
+        /// What each wall does, in wall-id order; empty for a closed table
+        /// (so a table with a hole or periodic walls is never the same
+        /// table as the closed one).
+        #[cfg_attr(
+            feature = "serde",
+            serde(default, skip_serializing_if = "Vec::is_empty")
+        )]
+        kinds: Vec<WallKind>,
     },
 }
 
@@ -80,6 +89,16 @@ impl Shape {
             Shape::Stadium { .. } => "stadium",
             Shape::Sinai { .. } => "sinai",
             Shape::Segments { .. } => "segments",
+        }
+    }
+
+    /// Whether every wall reflects (no hole, no periodic wall): the tables
+    /// the vector-lane kernels run.
+    #[must_use]
+    pub fn is_closed(&self) -> bool {
+        match self {
+            Shape::Segments { kinds, .. } => kinds.iter().all(WallKind::is_reflecting),
+            _ => true,
         }
     }
 
@@ -97,6 +116,25 @@ impl Shape {
     }
 }
 
+impl Shape {
+    /// `, N holes, M periodic` for a table with such walls, else empty.
+    fn open_note(&self) -> String {
+        let Shape::Segments { kinds, .. } = self else {
+            return String::new();
+        };
+        let holes = kinds.iter().filter(|k| k.is_hole()).count();
+        let periodic = kinds.iter().filter(|k| k.is_periodic()).count();
+        let mut note = String::new();
+        if holes > 0 {
+            note += &format!(", {holes} hole{}", if holes == 1 { "" } else { "s" });
+        }
+        if periodic > 0 {
+            note += &format!(", {periodic} periodic");
+        }
+        note
+    }
+}
+
 impl fmt::Display for Shape {
     /// The built-in tables as their spec string (`stadium:a=1`, which
     /// [`Table`](crate::Table) parses back); a segment table as
@@ -109,8 +147,15 @@ impl fmt::Display for Shape {
             Shape::Sinai { l, r } => write!(f, "sinai:L={l},R={r}"),
             Shape::Segments {
                 name: Some(name), ..
-            } => write!(f, "{name} (segments, {} walls)", self.walls()),
-            Shape::Segments { name: None, .. } => write!(f, "segments({} walls)", self.walls()),
+            } => write!(
+                f,
+                "{name} (segments, {} walls{})",
+                self.walls(),
+                self.open_note()
+            ),
+            Shape::Segments { name: None, .. } => {
+                write!(f, "segments({} walls{})", self.walls(), self.open_note())
+            }
         }
     }
 }

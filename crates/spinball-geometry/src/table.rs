@@ -13,8 +13,9 @@ use thiserror::Error;
 
 use crate::boundary::{Aabb, Boundary};
 use crate::error::GeometryError;
-use crate::hit::Hit;
+use crate::hit::{Hit, WallId};
 use crate::shape::Shape;
+use crate::wall_kind::WallKind;
 use crate::{Circle, Rectangle, SegmentTable, Sinai, Stadium};
 
 /// One of the built-in tables.
@@ -165,6 +166,30 @@ impl Boundary for Table {
             Table::Sinai(t) => t.hit_at(s),
         }
     }
+    fn wall_kind(&self, wall: WallId) -> WallKind {
+        match self {
+            Table::Circle(t) => t.wall_kind(wall),
+            Table::Rectangle(t) => t.wall_kind(wall),
+            Table::Stadium(t) => t.wall_kind(wall),
+            Table::Sinai(t) => t.wall_kind(wall),
+        }
+    }
+    fn lattice(&self) -> Option<[DVec2; 2]> {
+        match self {
+            Table::Circle(t) => t.lattice(),
+            Table::Rectangle(t) => t.lattice(),
+            Table::Stadium(t) => t.lattice(),
+            Table::Sinai(t) => t.lattice(),
+        }
+    }
+    fn has_holes(&self) -> bool {
+        match self {
+            Table::Circle(t) => t.has_holes(),
+            Table::Rectangle(t) => t.has_holes(),
+            Table::Stadium(t) => t.has_holes(),
+            Table::Sinai(t) => t.has_holes(),
+        }
+    }
 }
 
 /// Why a table description string could not be read.
@@ -277,8 +302,24 @@ impl Shape {
             Shape::Rectangle { l, h } => Built::Table(Rectangle::new(*l, *h)?.into()),
             Shape::Stadium { a } => Built::Table(Stadium::new(*a)?.into()),
             Shape::Sinai { l, r } => Built::Table(Sinai::new(*l, *r)?.into()),
-            Shape::Segments { outer, holes, name } => {
-                let table = SegmentTable::with_holes(outer.clone(), holes.clone())?;
+            Shape::Segments {
+                outer,
+                holes,
+                name,
+                kinds,
+            } => {
+                let mut table = SegmentTable::with_holes(outer.clone(), holes.clone())?;
+                for (i, kind) in kinds.iter().enumerate() {
+                    let i = i as WallId;
+                    table = match *kind {
+                        WallKind::Reflecting => table,
+                        WallKind::Hole => table.with_hole(i)?,
+                        WallKind::Periodic { partner, .. } if partner > i => {
+                            table.with_periodic(i, partner)?
+                        }
+                        WallKind::Periodic { .. } => table,
+                    };
+                }
                 Built::Segments(match name {
                     Some(name) => table.with_name(name.clone()),
                     None => table,
@@ -362,6 +403,24 @@ impl Boundary for Built {
         match self {
             Built::Table(t) => t.length_scale(),
             Built::Segments(t) => t.length_scale(),
+        }
+    }
+    fn wall_kind(&self, wall: WallId) -> WallKind {
+        match self {
+            Built::Table(t) => t.wall_kind(wall),
+            Built::Segments(t) => t.wall_kind(wall),
+        }
+    }
+    fn lattice(&self) -> Option<[DVec2; 2]> {
+        match self {
+            Built::Table(t) => t.lattice(),
+            Built::Segments(t) => t.lattice(),
+        }
+    }
+    fn has_holes(&self) -> bool {
+        match self {
+            Built::Table(t) => t.has_holes(),
+            Built::Segments(t) => t.has_holes(),
         }
     }
 }

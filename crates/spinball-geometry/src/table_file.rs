@@ -93,6 +93,29 @@ pub struct TableFile {
     /// Holes: clockwise loops of walls.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub holes: Vec<Vec<WallSpec>>,
+    /// Wall ids (in the order the walls are listed: outer loop, then each
+    /// hole loop) through which a ball leaves the table.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub exits: Vec<u32>,
+    /// Pairs of wall ids that are periodic partners (straight walls, each
+    /// the other's translate, facing each other).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub periodic: Vec<[u32; 2]>,
+    /// Stretches of wall opened as holes, each by its centre's Birkhoff
+    /// coordinate `s` and its arc length `size` (applied after `exits` and
+    /// `periodic`, in order; each splits a wall, so later wall ids move up).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub openings: Vec<Opening>,
+}
+
+/// A stretch of wall opened as a hole (see [`SegmentTable::with_hole_at`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Opening {
+    /// Birkhoff coordinate of the stretch's centre.
+    pub s: f64,
+    /// Its arc length.
+    pub size: f64,
 }
 
 /// Why a table file could not be read.
@@ -266,6 +289,11 @@ impl TableFile {
                     "a built-in table takes no `holes`".into(),
                 ));
             }
+            if !(self.exits.is_empty() && self.periodic.is_empty() && self.openings.is_empty()) {
+                return Err(TableFileError::Invalid(
+                    "a built-in table takes no `exits`, `periodic` or `openings`: describe it by its walls (or polygon) to give it holes or periodic walls".into(),
+                ));
+            }
             return Ok(Built::Table(spec.parse::<Table>()?));
         }
         let holes = self
@@ -280,7 +308,16 @@ impl TableFile {
             }
             None => walls(&self.outer)?,
         };
-        let table = SegmentTable::with_holes(outer, holes)?;
+        let mut table = SegmentTable::with_holes(outer, holes)?;
+        for &wall in &self.exits {
+            table = table.with_hole(wall)?;
+        }
+        for &[a, b] in &self.periodic {
+            table = table.with_periodic(a, b)?;
+        }
+        for opening in &self.openings {
+            table = table.with_hole_at(opening.s, opening.size)?;
+        }
         Ok(Built::Segments(match &self.name {
             Some(name) => table.with_name(name.clone()),
             None => table,
@@ -363,6 +400,59 @@ mod tests {
         assert!(text.starts_with(&path.display().to_string()), "{text}");
         assert!(text.contains("wall"), "{text}");
         std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn the_lorentz_cell_file_has_periodic_walls_and_the_stadium_file_a_hole() {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/tables");
+        let cell = TableFile::load(dir.join("square-lorentz-cell.toml")).unwrap();
+        assert!(!cell.has_holes());
+        assert_eq!(
+            cell.lattice(),
+            Some([DVec2::new(1.0, 0.0), DVec2::new(0.0, 1.0)])
+        );
+        let kinds: Vec<bool> = (0..5).map(|w| cell.wall_kind(w).is_periodic()).collect();
+        assert_eq!(kinds, [true, true, true, true, false]);
+        // The same cell as the built-in convenience.
+        let Built::Segments(cell) = cell else {
+            panic!("a table of walls")
+        };
+        let built = crate::LorentzGas::square(1.0, 0.4)
+            .unwrap()
+            .table()
+            .unwrap();
+        assert_eq!(cell.kinds(), built.kinds());
+        let open = TableFile::load(dir.join("stadium-with-hole.toml")).unwrap();
+        assert!(open.has_holes());
+        assert!(open.lattice().is_none());
+        assert!(!open.shape().unwrap().is_closed());
+        // Through the shape (what results carry) and back: kinds kept.
+        assert_eq!(open.shape().unwrap().build().unwrap(), open);
+    }
+
+    #[test]
+    fn wall_kind_keys_are_checked() {
+        let square = "polygon = [[0,0],[1,0],[1,1],[0,1]]\n";
+        let cases = [
+            (format!("{square}exits = [9]"), "does not exist"),
+            (format!("{square}exits = [0, 0]"), "already a hole"),
+            (format!("{square}periodic = [[0, 1]]"), "periodic partners"),
+            (
+                format!("{square}periodic = [[0, 2]]\nexits = [2]"),
+                "already",
+            ),
+            (
+                "builtin = \"stadium:a=1\"\nexits = [0]".to_string(),
+                "no `exits`",
+            ),
+        ];
+        for (text, needle) in cases {
+            let err = TableFile::from_toml(&text)
+                .and_then(|f| f.build())
+                .expect_err(&text)
+                .to_string();
+            assert!(err.contains(needle), "{text:?}: {err}");
+        }
     }
 
     #[test]

@@ -83,10 +83,11 @@ struct Runner {
 }
 
 /// Whether `table` can run in lanes: it has a [`Shape`] the kernels compile.
-/// Every built-in table and every `SegmentTable` can.
+/// Every built-in table and every closed `SegmentTable` can; a table with
+/// holes or periodic walls cannot (it runs on the scalar path).
 #[must_use]
 pub fn has_lane_form<B: Boundary + ?Sized>(table: &B) -> bool {
-    table.shape().is_some()
+    table.shape().is_some_and(|s| s.is_closed())
 }
 
 impl<B: Boundary> LaneBilliard<B> {
@@ -94,10 +95,14 @@ impl<B: Boundary> LaneBilliard<B> {
     /// thread.
     ///
     /// # Errors
-    /// [`LanesError::NoLaneForm`] for a table without a [`Shape`] (run it on
-    /// the scalar path).
+    /// [`LanesError::NoLaneForm`] for a table without a [`Shape`], and
+    /// [`LanesError::OpenTable`] for a table with holes or periodic walls
+    /// (run them on the scalar path).
     pub fn new(table: B, law: SpinLaw) -> Result<Self, LanesError> {
         let shape = table.shape().ok_or(LanesError::NoLaneForm)?;
+        if !shape.is_closed() {
+            return Err(LanesError::OpenTable);
+        }
         let segments = match &shape {
             // The walls of a `SegmentTable` make a valid one again; loops
             // that do not (a hand-made shape) have no lane form.

@@ -48,6 +48,12 @@ pub enum LanesError {
         "the table has no lane form (its Boundary::shape() is None); run it on the scalar path"
     )]
     NoLaneForm,
+    /// The table has holes or periodic walls: the lane kernels only run
+    /// closed tables (every wall reflecting). Run it on the scalar path.
+    #[error(
+        "the table has holes or periodic walls, which the lane kernels do not run; run it on the scalar path"
+    )]
+    OpenTable,
     /// A trajectory (or its shadow or tangent vectors) became non-finite: no
     /// wall ahead, a shadow separation of zero, a vector that collapsed, or
     /// the ball got stuck (more than `spinball_core::MAX_ZERO_TIME_RUN`

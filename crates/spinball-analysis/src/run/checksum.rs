@@ -17,7 +17,7 @@
 #![cfg_attr(not(feature = "serde"), allow(dead_code))]
 
 use spinball_core::Sampler;
-use spinball_geometry::{Segment, Shape};
+use spinball_geometry::{Segment, Shape, WallKind};
 use thiserror::Error;
 
 use super::engine::Engine;
@@ -195,12 +195,33 @@ impl Fnv1a {
                 self.tag(3);
                 self.f64s(&[*l, *r]);
             }
-            Shape::Segments { outer, holes, .. } => {
+            Shape::Segments {
+                outer,
+                holes,
+                kinds,
+                ..
+            } => {
                 self.tag(4);
                 self.walls(outer);
                 self.u64(holes.len() as u64);
                 for hole in holes {
                     self.walls(hole);
+                }
+                // Closed tables (no kinds) hash as they always did.
+                if !kinds.is_empty() {
+                    self.tag(5);
+                    self.u64(kinds.len() as u64);
+                    for kind in kinds {
+                        match kind {
+                            WallKind::Reflecting => self.tag(0),
+                            WallKind::Hole => self.tag(1),
+                            WallKind::Periodic { partner, shift, .. } => {
+                                self.tag(2);
+                                self.u64(u64::from(*partner));
+                                self.f64s(&[shift.x, shift.y]);
+                            }
+                        }
+                    }
                 }
             }
         }

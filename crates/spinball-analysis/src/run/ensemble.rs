@@ -218,8 +218,8 @@ impl<B: Boundary> Ensemble<B> {
     /// # Errors
     /// [`AnalysisError::InvalidOption`] for fewer than 2 initial conditions
     /// (no standard error), an index range past the end of explicit states,
-    /// zero collisions, a bad method, a non-finite threshold or
-    /// `Threads::Fixed(0)`.
+    /// zero collisions, a bad method (finite differences on a periodic
+    /// table), a non-finite threshold or `Threads::Fixed(0)`.
     pub fn validate(&self) -> Result<(), AnalysisError> {
         if self.n_ics() < 2 {
             return Err(AnalysisError::invalid(
@@ -253,6 +253,13 @@ impl<B: Boundary> Ensemble<B> {
             ));
         }
         LyapunovOptions::new(self.collisions, self.method).validate()?;
+        if self.table.lattice().is_some() && matches!(self.method, Method::FiniteDifference { .. })
+        {
+            return Err(AnalysisError::invalid(
+                "method",
+                "finite differences compare a shadow ball's position with the reference's, and on a periodic table the two may sit in neighbouring cells near a periodic wall: use Method::Tangent (the tangent map is unchanged by a crossing)",
+            ));
+        }
         if !self.threshold.is_finite() {
             return Err(AnalysisError::invalid(
                 "threshold",

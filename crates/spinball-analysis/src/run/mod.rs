@@ -59,9 +59,9 @@
 //!
 //! ## Engines
 //! A table with a lane form ([`Boundary::shape`](spinball_geometry::Boundary::shape) is `Some`: every built-in
-//! table and every segment table) runs in the vector-lane kernels by default
-//! ([`Engine::Lanes`]); any other table, or [`Engine::Scalar`], runs on the
-//! scalar path. Both give the same trajectories, and the same typed error,
+//! table and every closed segment table) runs in the vector-lane kernels by default
+//! ([`Engine::Lanes`]); any other table (one with holes or periodic walls
+//! among them), or [`Engine::Scalar`], runs on the scalar path. Both give the same trajectories, and the same typed error,
 //! with the absolute initial-condition index, for the same failure.
 //!
 //! ## Reproducibility
