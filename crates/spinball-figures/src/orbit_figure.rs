@@ -113,3 +113,39 @@ pub fn island_area_panel(curves: &[(String, IslandCurve, f64)]) -> LinePlot {
     }
     plot
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use spinball_analysis::orbits::{
+        BirkhoffPoint, IslandOptions, NewtonOptions, find_orbit, island_sizes,
+    };
+    use spinball_analysis::run::Threads;
+    use spinball_core::{Billiard, SpinLaw};
+    use spinball_geometry::Sinai;
+    use spinball_plot::Plot;
+
+    #[test]
+    fn panels_of_the_sinai_axis_orbit() {
+        let table = Sinai::new(2.0, 1.0).unwrap();
+        let billiard = Billiard::new(&table, SpinLaw::new(0.1).unwrap());
+        let newton = NewtonOptions::default();
+        let orbit = find_orbit(&billiard, BirkhoffPoint::normal(2.0), 2, &newton).unwrap();
+        // Hyperbolic at α = 0.1: red markers at both points.
+        let markers = orbit_markers(std::slice::from_ref(&orbit));
+        assert_eq!(markers.len(), 2);
+        assert!(
+            markers
+                .iter()
+                .all(|m| m.2 == class_colour(&orbit.stability.class))
+        );
+        assert_eq!(markers[0].2, RGBColor(0xE0, 0x1A, 0x1A));
+        let options = IslandOptions::default()
+            .with_cells(11)
+            .with_threads(Threads::Fixed(1));
+        let curve = island_sizes(&table, &orbit, &[0.1, 0.5], 1e-6, &newton, &options).unwrap();
+        assert_eq!(curve.areas()[0], (0.1, 0.0, 0.0));
+        let panel = island_area_panel(&[("R = 1".into(), curve, 0.2)]);
+        assert!(panel.validate().is_ok());
+    }
+}

@@ -295,6 +295,10 @@ fn phase_space_plots_draw_and_refuse_bad_data() {
         .cells(4, 3, cells.clone())
         .outline(mask)
         .points(vec![(1.0, 0.5, 0.3), (f64::NAN, 0.0, 0.1)])
+        .markers(vec![
+            (2.0, 0.0, spinball_plot::palette(1)),
+            (f64::NAN, 0.0, spinball_plot::palette(2)),
+        ])
         .labels("s", "sin θ")
         .title("map");
     let path = dir.join("map.png");

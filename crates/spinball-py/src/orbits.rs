@@ -1,12 +1,13 @@
 //! `periodic_orbits`: the periodic orbits of a table, their stability
-//! through a list of α and the α where it changes, as NumPy arrays.
+//! through a list of α and the α where it changes, as NumPy arrays;
+//! `island_sizes`: the island around one orbit against α.
 
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use spinball_analysis::orbits::{
     BirkhoffPoint, IslandOptions, IslandPoint, NewtonOptions, SearchOptions, StabilityChange,
-    StabilityClass, find_orbit, island_sizes, stability_diagram,
+    StabilityClass, find_orbit, island_sizes as follow_islands, stability_diagram,
 };
 use spinball_core::{Billiard, SpinLaw};
 
@@ -164,7 +165,7 @@ pub fn island_sizes<'py>(
                     let billiard = Billiard::new(&t, SpinLaw::extended(first)?);
                     let start = BirkhoffPoint::new(s, v_par, spin);
                     let orbit = find_orbit(&billiard, start, period, &newton)?;
-                    island_sizes(&t, &orbit, &alphas, precision, &newton, &options)
+                    follow_islands(&t, &orbit, &alphas, precision, &newton, &options)
                 })
             },
             analysis,
