@@ -45,6 +45,16 @@
 //! - [`diagnostics`]: the paper's checks of its mechanism: phase-space
 //!   separation, collision rate, wall transitions and |ΔQ|, curved share,
 //!   energy conservation, and the paper's published numbers.
+//! - [`open`]: ensembles on tables with holes or periodic walls: per
+//!   initial condition, when and how a ball escaped (or that it was still
+//!   inside, censored) and its unwrapped displacement through a lattice.
+//! - [`escape`]: what escape times say: the survival probability
+//!   (Kaplan–Meier with its band), the escape rate of the exponential
+//!   regime, an algebraic tail and its exponent, and the mean escape time
+//!   the invariant measure predicts (Kac).
+//! - [`transport`]: what displacements say: the mean-square displacement,
+//!   the diffusion coefficient over a stated window, and the marginal
+//!   `t ln t` growth of an infinite horizon.
 //! - [`animation`]: balls at the frame times of a film (positions, spin
 //!   angles, the exact collisions between frames), what the GIF and MP4
 //!   writers draw.
@@ -61,15 +71,19 @@
 //! ```text
 //! report
 //! orbits
-//! phase_space   diagnostics
-//! precision
-//! run           animation
+//! phase_space   diagnostics   escape
+//! precision                   transport
+//! run           animation     open
 //! estimators
 //! ```
 //!
 //! `phase_space` and `diagnostics` sit side by side on `precision` and do
 //! not import each other; `orbits` builds on `phase_space`; `animation`
-//! needs only the initial conditions of `run`.
+//! and `open` need only the initial conditions of `run`; `transport`
+//! builds on `estimators` alone and `escape` on `diagnostics` (the mean
+//! speed of the Kac time). The statistics of `escape` and `transport` take
+//! plain numbers, so they serve any source of escape times or
+//! displacements, `open` among them.
 //!
 //! ```
 //! use spinball_analysis::estimators::Method;

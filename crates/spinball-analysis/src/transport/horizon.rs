@@ -10,7 +10,9 @@ use std::fmt;
 ///
 /// The geometry decides it (a corridor, a strip of the plane that misses
 /// every scatterer, makes the horizon infinite); here it is an input, so
-/// that the estimator knows which growth law to fit.
+/// that the estimator knows which growth law to fit. A Lorentz gas's
+/// [`LorentzGas::horizon`](spinball_geometry::LorentzGas::horizon) (which
+/// also names the corridor's direction) converts into it with `.into()`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
@@ -29,5 +31,32 @@ impl fmt::Display for Horizon {
             Horizon::Finite => "finite",
             Horizon::Infinite => "infinite",
         })
+    }
+}
+
+impl From<spinball_geometry::Horizon> for Horizon {
+    fn from(h: spinball_geometry::Horizon) -> Self {
+        match h {
+            spinball_geometry::Horizon::Finite => Horizon::Finite,
+            spinball_geometry::Horizon::Infinite { .. } => Horizon::Infinite,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Horizon;
+    use spinball_geometry::LorentzGas;
+
+    #[test]
+    fn the_lattice_decides_the_growth_law() {
+        // Square lattice: corridors along the axes for every R < w/2.
+        let square = LorentzGas::square(1.0, 0.4).unwrap();
+        assert_eq!(Horizon::from(square.horizon()), Horizon::Infinite);
+        // Triangular lattice: finite for √3/4·w ≤ R < w/2 (√3/4 ≈ 0.433).
+        let closed = LorentzGas::triangular(1.0, 0.45).unwrap();
+        assert_eq!(Horizon::from(closed.horizon()), Horizon::Finite);
+        let open = LorentzGas::triangular(1.0, 0.4).unwrap();
+        assert_eq!(Horizon::from(open.horizon()), Horizon::Infinite);
     }
 }
