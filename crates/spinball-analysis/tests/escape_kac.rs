@@ -22,8 +22,10 @@ fn stadium(h: f64) -> SegmentTable {
 /// escape, plus the hit on the hole itself) of `starts`, against Kac.
 fn kac_ratio(table: SegmentTable, h: f64, starts: Vec<State>, budget: u64) -> KacRatio {
     let kac = KacPrediction::for_table(&table, h, 0.0).unwrap();
+    let n = starts.len() as u64;
     let records = OpenEnsemble::new(Billiard::new(table, SpinLaw::specular()))
         .with_starts(starts)
+        .with_indices(0..n)
         .with_threads(Threads::Fixed(2))
         .escape_times(Budget::collisions(budget))
         .unwrap();
@@ -69,9 +71,10 @@ fn the_mean_escape_from_anywhere_approaches_kac_as_the_hole_shrinks() {
     // started on the hole leaves at once only a share h/|∂Q| of the time;
     // the slow bouncing-ball orbits weigh more), and the excess vanishes
     // as h → 0 (the escape law becomes exponential with rate μ(hole)).
-    // Measured here with 8000 balls, censored at 2·10⁵ collisions: the
-    // ratio to Kac falls towards 1 as h halves twice, and at h = 0.1 it
-    // is within 10% of 1 (the size of the finite-hole excess there).
+    // 8000 balls per hole, censored at 2·10⁵ collisions. Measured (seed
+    // 11): ratio to Kac 1.58 ± 0.14, 1.30 ± 0.07, 1.15 ± 0.04 at h = 0.4,
+    // 0.2, 0.1: the excess is linear in h (≈ 1.5 h). Checked: it falls
+    // as h halves, and halves with h within 3 combined SE.
     let law = SpinLaw::specular();
     let ratios: Vec<KacRatio> = [0.4, 0.2, 0.1]
         .into_iter()
@@ -83,11 +86,17 @@ fn the_mean_escape_from_anywhere_approaches_kac_as_the_hole_shrinks() {
         .collect();
     for r in &ratios {
         eprintln!(
-            "h: ratio {:.4} ± {:.4} (measured {:.2} of predicted {:.2})",
+            "ratio {:.4} ± {:.4} (measured {:.2} of predicted {:.2})",
             r.ratio, r.ratio_sem, r.measured.mean, r.predicted
         );
     }
     let excess: Vec<f64> = ratios.iter().map(|r| r.ratio - 1.0).collect();
-    assert!(excess[0] > excess[2], "{excess:?}");
-    assert!(excess[2].abs() < 0.1 + 3.0 * ratios[2].ratio_sem, "{ratios:?}");
+    assert!(excess[0] > excess[1] && excess[1] > excess[2], "{excess:?}");
+    for k in 0..2 {
+        let se = (ratios[k].ratio_sem.powi(2) / 4.0 + ratios[k + 1].ratio_sem.powi(2)).sqrt();
+        assert!(
+            (excess[k + 1] - excess[k] / 2.0).abs() < 3.0 * se,
+            "excess {excess:?} does not halve with h (SE {se})"
+        );
+    }
 }
