@@ -11,7 +11,7 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use super::lyapunov::LyapunovDocument;
-use super::multilevel::MultilevelDocument;
+use super::multilevel::{MultilevelDocument, MultilevelPartialDocument};
 use super::orbits::OrbitsDocument;
 use super::partial::PartialDocument;
 use super::phase_space::{FtleMapDocument, FtleMapPartialDocument, KacDocument, SectionDocument};
@@ -60,6 +60,10 @@ pub enum Document {
     /// lyapunov` or `sweep` with `--estimator multilevel`).
     #[serde(rename = "spinball.multilevel")]
     Multilevel(MultilevelDocument),
+    /// A shard of a multilevel campaign (`spinball slurm --estimator
+    /// multilevel`).
+    #[serde(rename = "spinball.multilevel.partial")]
+    MultilevelPartial(MultilevelPartialDocument),
     /// The stability diagram of periodic orbits (`spinball orbits`).
     #[serde(rename = "spinball.orbits")]
     Orbits(OrbitsDocument),
@@ -149,6 +153,7 @@ impl Document {
             Document::SpectrumPartial(_) => "spinball.spectrum.partial",
             Document::Sweep(_) => "spinball.sweep",
             Document::Multilevel(_) => "spinball.multilevel",
+            Document::MultilevelPartial(_) => "spinball.multilevel.partial",
             Document::Orbits(_) => "spinball.orbits",
             Document::Section(_) => "spinball.section",
             Document::Kac(_) => "spinball.kac",
