@@ -6,21 +6,26 @@
 use std::path::{Path, PathBuf};
 
 use clap::Args;
-use spinball_analysis::report::{Document, PartialDocument, SpectrumDocument};
+use spinball_analysis::report::{
+    Document, MultilevelPartialDocument, PartialDocument, SpectrumDocument,
+};
 use spinball_analysis::run::MergeError;
 
 use crate::commands::ftle_map::merge_maps;
 use crate::commands::spectrum::write_spectrum;
 use crate::documents::read_document;
 use crate::error::CliError;
+use crate::estimator_args::write_multilevel;
 use crate::output::OutputArgs;
 use crate::phase_args::PhaseOutput;
+use crate::stdout::print;
 
 /// The arguments of `spinball merge`.
 #[derive(Debug, Clone, Args)]
 pub struct MergeArgs {
     /// The partial results (the --json files of every shard of a
-    /// `lyapunov`, `ftle`, `spectrum` or `ftle-map` run), in any order.
+    /// `lyapunov`, `ftle`, `spectrum` or `ftle-map` run, or of a multilevel
+    /// campaign), in any order.
     #[arg(required = true)]
     pub parts: Vec<PathBuf>,
     #[command(flatten)]
@@ -98,6 +103,37 @@ pub fn merge(args: &MergeArgs) -> Result<(), CliError> {
             }
             let merged = SpectrumDocument::merge(&docs).map_err(CliError::usage)?;
             write_spectrum(&merged, &args.out)
+        }
+        Document::MultilevelPartial(first) => {
+            if args.out.csv.is_some() || args.out.npy.is_some() {
+                return Err(CliError::Usage(
+                    "multilevel shards merge into --json only (their levels have different numbers of initial conditions)".into(),
+                ));
+            }
+            let mut docs = vec![first];
+            for path in &args.parts[1..] {
+                match read_document(path)? {
+                    Document::MultilevelPartial(d) => docs.push(d),
+                    other => {
+                        return Err(CliError::Usage(format!(
+                            "{} is a `{}`, not a shard of a multilevel campaign like {}",
+                            path.display(),
+                            other.kind(),
+                            first_path.display()
+                        )));
+                    }
+                }
+            }
+            let merged = MultilevelPartialDocument::merge(&docs).map_err(CliError::usage)?;
+            if !args.out.quiet {
+                for p in &merged.points {
+                    print(&format!("alpha = {}\n{}\n", p.alpha, p.estimate))?;
+                }
+            }
+            match &args.out.json {
+                Some(path) => write_multilevel(path, &merged.points),
+                None => Ok(()),
+            }
         }
         Document::FtleMapPartial(first) => {
             let out = PhaseOutput {
