@@ -114,7 +114,7 @@ fn resumed_runs_are_bitwise_uninterrupted_runs_on_every_instruction_set() {
 
 #[test]
 fn a_resume_runs_one_method() {
-    let table = tables()[4].clone();
+    let table = tables()[4];
     let law = SpinLaw::new(0.5).unwrap();
     let ics = draw(&table, &law, 2, Vec::new());
     let starts: Vec<State> = ics.iter().map(|x| x.0).collect();
