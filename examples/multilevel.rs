@@ -17,12 +17,21 @@
 //! (error/target)²` (both estimators' work goes like `1/error²`), and the
 //! ratio plain/multilevel of those is the speed-up. `--quick` (CI): target
 //! 1%, small pilots, one repeat, a second or two.
+//!
+//! `--draw-cost` measures instead what one draw of the top level costs on
+//! the lane engine (stadium a = 1, α = 0.5, levels up to 25 000
+//! collisions, tangent and finite differences): each trajectory read at
+//! `T_0`, `T_L−1` and `T_L` by stopping and resuming one run, against
+//! rerunning it to each length (how the lane engine read its levels
+//! before it could resume), in alternating rounds (`--repeat`, default 5),
+//! medians of the process CPU time, and checks that both read the same
+//! numbers bitwise.
 
 use std::time::Instant;
 
 use spinball::analysis::AnalysisError;
 use spinball::analysis::estimators::Method;
-use spinball::analysis::precision::{EnsembleLevels, Planner};
+use spinball::analysis::precision::{EnsembleLevels, LevelSamples, Planner, default_levels};
 use spinball::analysis::run::{Ensemble, Threads};
 use spinball::prelude::*;
 
@@ -39,6 +48,7 @@ struct Options {
     repeat: u64,
     threads: Threads,
     seed: u64,
+    draw_cost: bool,
 }
 
 fn options() -> Result<Options, String> {
@@ -48,18 +58,22 @@ fn options() -> Result<Options, String> {
         repeat: 3,
         threads: Threads::All,
         seed: 2030,
+        draw_cost: false,
     };
+    let mut explicit_repeat = false;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         let mut value = |name: &str| args.next().ok_or_else(|| format!("{name} needs a value"));
         match a.as_str() {
             "--quick" => o.quick = true,
+            "--draw-cost" => o.draw_cost = true,
             "--target" => {
                 o.target = value("--target")?
                     .parse()
                     .map_err(|e| format!("--target: {e}"))?
             }
             "--repeat" => {
+                explicit_repeat = true;
                 o.repeat = value("--repeat")?
                     .parse()
                     .map_err(|e| format!("--repeat: {e}"))?
@@ -82,6 +96,8 @@ fn options() -> Result<Options, String> {
     if o.quick {
         o.target = 1e-2;
         o.repeat = 1;
+    } else if o.draw_cost && !explicit_repeat {
+        o.repeat = 5;
     }
     if !(o.target > 0.0 && o.target.is_finite()) || o.repeat == 0 {
         return Err("--target must be > 0 and --repeat >= 1".into());
@@ -106,8 +122,70 @@ struct Outcome {
     value: f64,
 }
 
+/// CPU seconds of this process so far (all threads; `/proc/self/stat`,
+/// clock ticks of 1/100 s). `None` off Linux.
+fn cpu_seconds() -> Option<f64> {
+    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
+    // Fields after the command name (which may hold spaces) in parentheses.
+    let rest = &stat[stat.rfind(')')? + 2..];
+    let f: Vec<&str> = rest.split(' ').collect();
+    let (utime, stime): (f64, f64) = (f.get(11)?.parse().ok()?, f.get(12)?.parse().ok()?);
+    Some((utime + stime) / 100.0)
+}
+
+/// `--draw-cost`: see the module docs.
+fn draw_cost(o: &Options) -> Result<(), Box<dyn std::error::Error>> {
+    let n: u64 = if o.quick { 96 } else { 960 };
+    let levels = default_levels(if o.quick { 2_000 } else { 25_000 }).expect("four levels");
+    let top = levels.len() - 1;
+    let reads = [levels[0], levels[top - 1], levels[top]];
+    println!(
+        "draw cost of level {top} (reads {reads:?}), {n} ICs, stadium a = 1, α = 0.5, lanes; {} rounds, medians of process CPU time",
+        o.repeat
+    );
+    for method in [Method::Tangent, Method::default()] {
+        let scene = Ensemble::new(Stadium::new(1.0)?, SpinLaw::new(0.5)?)
+            .with_method(method)
+            .with_threads(o.threads)
+            .with_seed(o.seed);
+        let source = EnsembleLevels::new(scene.clone(), levels.clone())?;
+        let seeded = scene.with_seed(source.level_seed(top));
+        let (mut resumed, mut rerun) = (Vec::new(), Vec::new());
+        for _ in 0..o.repeat {
+            let c = cpu_seconds();
+            let draws = LevelSamples::run(&source, top, 0..n)?.draws;
+            resumed.push(cpu_seconds().zip(c).map_or(f64::NAN, |(b, a)| b - a));
+            let c = cpu_seconds();
+            let runs = reads
+                .iter()
+                .map(|&t| seeded.clone().with_collisions(t).trajectories(0..n))
+                .collect::<Result<Vec<_>, _>>()?;
+            rerun.push(cpu_seconds().zip(c).map_or(f64::NAN, |(b, a)| b - a));
+            for (i, d) in draws.iter().enumerate() {
+                let same = [d.short, d.coarse, d.fine]
+                    .iter()
+                    .zip(&runs)
+                    .all(|(x, r)| x.to_bits() == r[i].exponent.to_bits());
+                assert!(same, "draw {i} differs: {d:?}");
+            }
+        }
+        let (a, b) = (median(resumed), median(rerun));
+        let per = |s: f64| 1e9 * s / (n as f64 * levels[top] as f64);
+        println!(
+            "  {method:?}: resumed {a:.2} s ({:.1} ns per IC-step of T_L), rerun {b:.2} s ({:.1} ns); rerun/resumed {:.2}",
+            per(a),
+            per(b),
+            b / a
+        );
+    }
+    Ok(())
+}
+
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let o = options()?;
+    if o.draw_cost {
+        return draw_cost(&o);
+    }
     let (pilot_ics, pilot_t, ml_pilot) = if o.quick {
         (64, vec![250, 500, 1_000, 2_000], 32)
     } else {

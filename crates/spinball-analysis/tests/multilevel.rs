@@ -11,10 +11,10 @@ use std::ops::Range;
 use spinball_analysis::AnalysisError;
 use spinball_analysis::estimators::Method;
 use spinball_analysis::precision::{
-    EnsembleLevels, EstimatorKind, LevelDraw, LevelSamples, LevelSource, MULTILEVEL_MARGIN,
-    Multilevel, MultilevelEstimate, Planner, level_seed,
+    EnsembleLevels, EstimatorKind, LevelDraw, LevelSamples, LevelShard, LevelSource,
+    MULTILEVEL_MARGIN, Multilevel, MultilevelEstimate, Planner, level_seed,
 };
-use spinball_analysis::run::{Engine, Ensemble, Threads};
+use spinball_analysis::run::{Engine, Ensemble, Shard, Threads};
 use spinball_core::SpinLaw;
 use spinball_geometry::{DVec2, Sinai, Stadium};
 use spinball_test_support::{Normal, segment_sinai};
@@ -260,9 +260,62 @@ fn reproducible_across_threads_shards_and_engines() {
                 assert!((x - y).abs() <= 1e-9 * x.abs().max(1e-3), "{a:?} {b:?}");
             }
         }
-        // Lanes rerun the shorter reads; the scalar path reads one run.
-        assert_eq!(lanes.cost(2), 200.0 + 400.0 + 800.0);
+        // Both engines read the three lengths off one run of T_2.
+        assert_eq!(lanes.cost(2), 800.0);
         assert_eq!(scalar.cost(2), 800.0);
+    }
+}
+
+/// A campaign's allocation (made once from a pilot) run in shards and
+/// merged gives bitwise the estimate of one process running it whole, in
+/// any shard order, on both methods (finite differences carry the paired
+/// method differences through the shards); incomplete or mixed sets of
+/// shards are refused.
+#[test]
+fn sharded_allocations_merge_into_the_unsharded_estimate() {
+    let levels = vec![200, 400, 800, 1600];
+    let options = Multilevel::new(0.05).with_pilot_ics(16);
+    for method in [Method::Tangent, Method::default()] {
+        let source = EnsembleLevels::new(
+            stadium(0.5).with_method(method).with_seed(9),
+            levels.clone(),
+        )
+        .unwrap();
+        let allocation = options.allocate(&source).unwrap();
+        assert_eq!(allocation.levels, levels);
+        assert!(allocation.ics.iter().all(|&n| n >= 16), "{allocation:?}");
+        let whole = allocation.run(&source).unwrap();
+        // Three shards: the top level may have fewer ICs than that.
+        let mut shards: Vec<LevelShard> = (0..3)
+            .map(|k| {
+                allocation
+                    .run_shard(&source, Shard::new(k, 3).unwrap())
+                    .unwrap()
+            })
+            .collect();
+        shards.reverse();
+        let merged = LevelShard::merge(&shards).unwrap();
+        let untimed = |mut e: MultilevelEstimate| {
+            for l in &mut e.levels {
+                l.wall_time_s = 0.0;
+            }
+            format!("{e:?}")
+        };
+        assert_eq!(untimed(merged), untimed(whole.clone()));
+        assert_eq!(whole.rounds, 0);
+        if matches!(method, Method::FiniteDifference { .. }) {
+            assert!(whole.budget.method_bias.sem > 0.0, "FD pairs with tangent");
+        }
+        assert!(LevelShard::merge(&shards[..2]).is_err(), "a shard missing");
+        let twice = vec![shards[0].clone(), shards[0].clone(), shards[1].clone()];
+        assert!(LevelShard::merge(&twice).is_err(), "a shard twice");
+        let other = allocation
+            .run_shard(&source, Shard::new(0, 2).unwrap())
+            .unwrap();
+        assert!(
+            LevelShard::merge(&[other, shards[1].clone(), shards[2].clone()]).is_err(),
+            "mixed shard counts"
+        );
     }
 }
 

@@ -6,12 +6,15 @@
 //! initial conditions per level are chosen by the estimator for
 //! `--target-error`, so `--ics` does not apply.
 
-use std::path::Path;
+use std::fs;
+use std::path::{Path, PathBuf};
 
 use clap::{Args, ValueEnum};
-use spinball_analysis::precision::{EnsembleLevels, Multilevel};
-use spinball_analysis::report::{Document, MultilevelDocument, MultilevelPoint};
-use spinball_analysis::run::Ensemble;
+use spinball_analysis::precision::{EnsembleLevels, LevelAllocation, LevelSource, Multilevel};
+use spinball_analysis::report::{
+    Document, MultilevelDocument, MultilevelPartialDocument, MultilevelPoint, MultilevelShardPoint,
+};
+use spinball_analysis::run::{Ensemble, Shard};
 use spinball_geometry::Boundary;
 
 use crate::documents::write_document;
@@ -40,6 +43,12 @@ pub struct EstimatorArgs {
     /// multilevel.
     #[arg(long, value_name = "REL")]
     pub target_error: Option<f64>,
+    /// Run this multilevel allocation (levels and initial conditions per
+    /// level, fixed from a pilot) instead of planning one as the run goes:
+    /// `spinball slurm --estimator multilevel` writes one per table and α,
+    /// and each task runs its --shard of it for `spinball merge`. One α.
+    #[arg(long, value_name = "FILE")]
+    pub allocation: Option<PathBuf>,
 }
 
 impl EstimatorArgs {
@@ -49,6 +58,11 @@ impl EstimatorArgs {
     /// [`CliError::Usage`] for multilevel without `--target-error`, a
     /// target out of range, or `--target-error` with the plain estimator.
     pub fn multilevel(&self) -> Result<Option<Multilevel>, CliError> {
+        if self.allocation.is_some() && self.estimator != EstimatorArg::Multilevel {
+            return Err(CliError::Usage(
+                "--allocation applies to --estimator multilevel".into(),
+            ));
+        }
         match (self.estimator, self.target_error) {
             (EstimatorArg::Plain, None) => Ok(None),
             (EstimatorArg::Plain, Some(_)) => Err(CliError::Usage(
@@ -77,8 +91,7 @@ pub fn run_multilevel<B: Boundary + Clone + Sync>(
     ensemble: &Ensemble<B>,
     options: &Multilevel,
 ) -> Result<MultilevelPoint, CliError> {
-    let source = EnsembleLevels::up_to(ensemble.clone(), ensemble.collisions)
-        .map_err(|e| CliError::Usage(format!("--estimator multilevel: {e}")))?;
+    let source = levels_of(ensemble)?;
     let estimate = options
         .run(&source)
         .map_err(|e| CliError::Failed(format!("alpha = {}: {e}", ensemble.alpha())))?;
@@ -86,6 +99,85 @@ pub fn run_multilevel<B: Boundary + Clone + Sync>(
         alpha: ensemble.alpha(),
         estimate,
     })
+}
+
+/// The levels of `ensemble` up to its collisions, as a multilevel run
+/// makes them.
+fn levels_of<B: Boundary + Clone + Sync>(
+    ensemble: &Ensemble<B>,
+) -> Result<EnsembleLevels<B>, CliError> {
+    EnsembleLevels::up_to(ensemble.clone(), ensemble.collisions)
+        .map_err(|e| CliError::Usage(format!("--estimator multilevel: {e}")))
+}
+
+/// The allocation of `options` for `ensemble`'s levels, from a pilot (what
+/// `spinball slurm` fixes for its tasks).
+///
+/// # Errors
+/// As [`run_multilevel`].
+pub fn allocate_multilevel<B: Boundary + Clone + Sync>(
+    ensemble: &Ensemble<B>,
+    options: &Multilevel,
+) -> Result<LevelAllocation, CliError> {
+    options
+        .allocate(&levels_of(ensemble)?)
+        .map_err(|e| CliError::Failed(format!("alpha = {}: {e}", ensemble.alpha())))
+}
+
+/// The allocation in `path` (written by `spinball slurm`).
+///
+/// # Errors
+/// [`CliError::Usage`] for a file that cannot be read or is not one.
+pub fn read_allocation(path: &Path) -> Result<LevelAllocation, CliError> {
+    let text = fs::read_to_string(path)
+        .map_err(|e| CliError::Usage(format!("cannot read {}: {e}", path.display())))?;
+    serde_json::from_str(&text).map_err(|e| {
+        CliError::Usage(format!(
+            "{} is not a multilevel allocation: {e}",
+            path.display()
+        ))
+    })
+}
+
+/// Shard `shard` of `allocation` on `ensemble`'s levels.
+///
+/// # Errors
+/// [`CliError::Usage`] for an allocation of other levels; [`CliError::Failed`]
+/// for a failed run.
+pub fn run_allocation_shard<B: Boundary + Clone + Sync>(
+    ensemble: &Ensemble<B>,
+    allocation: &LevelAllocation,
+    shard: Shard,
+) -> Result<MultilevelShardPoint, CliError> {
+    let source = levels_of(ensemble)?;
+    if source.levels() != allocation.levels.as_slice() {
+        return Err(CliError::Usage(format!(
+            "--allocation is for levels {:?}; --collisions {} makes {:?}",
+            allocation.levels,
+            ensemble.collisions,
+            source.levels()
+        )));
+    }
+    let shard = allocation
+        .run_shard(&source, shard)
+        .map_err(|e| CliError::Failed(format!("alpha = {}: {e}", ensemble.alpha())))?;
+    Ok(MultilevelShardPoint {
+        alpha: ensemble.alpha(),
+        provenance: ensemble.provenance(),
+        shard,
+    })
+}
+
+/// Write `points` to `path` as a `spinball.multilevel.partial` document.
+///
+/// # Errors
+/// [`CliError::Failed`] if it cannot be written.
+pub fn write_multilevel_partial(
+    path: &Path,
+    points: Vec<MultilevelShardPoint>,
+) -> Result<(), CliError> {
+    let doc = Document::MultilevelPartial(MultilevelPartialDocument { points });
+    write_document(path, &doc, false)
 }
 
 /// Write `points` to `path` as a `spinball.multilevel` document.

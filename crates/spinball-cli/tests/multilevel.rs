@@ -129,3 +129,108 @@ fn multilevel_usage_errors_exit_2() {
         assert!(err.contains(says), "{args:?}: {err}");
     }
 }
+
+/// The estimates of a multilevel document with the levels' wall times
+/// taken out (the only numbers a sharded run may differ in).
+fn untimed(mut doc: Value) -> Value {
+    for p in doc["points"].as_array_mut().unwrap() {
+        for l in p["estimate"]["levels"].as_array_mut().unwrap() {
+            l["wall_time_s"] = Value::Null;
+        }
+    }
+    doc.as_object_mut().unwrap().remove("version");
+    doc
+}
+
+/// `spinball slurm --estimator multilevel` plans the allocation once; its
+/// tasks (the array script itself, run by bash as SLURM would) each run
+/// their shard of every level, the merge job joins them, and the result is
+/// bitwise the allocation run whole in one process.
+#[test]
+fn slurm_multilevel_shards_merge_into_the_unsharded_run() {
+    let dir = scratch("slurm-multilevel");
+    let d = dir.join("campaign");
+    let options = [
+        "--table",
+        "stadium:a=1",
+        "--alpha",
+        "0.5",
+        "--collisions",
+        "1600",
+        "--method",
+        "fd",
+        "--seed",
+        "4",
+        "--threads",
+        "1",
+        "--estimator",
+        "multilevel",
+        "--target-error",
+        "0.05",
+    ];
+    let mut args = vec!["slurm"];
+    args.extend(options);
+    args.extend(["--shards", "3", "--dir", d.to_str().unwrap()]);
+    let run = spinball(&args);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let plan = d.join("plans").join("t0_a0.json");
+    let allocation = json(&plan);
+    assert_eq!(
+        allocation["levels"],
+        serde_json::json!([200, 400, 800, 1600])
+    );
+    let array = std::fs::read_to_string(d.join("array.sbatch")).unwrap();
+    assert!(array.contains("#SBATCH --array=0-2"), "{array}");
+    assert!(array.contains("--allocation"), "{array}");
+    for task in 0..3 {
+        let status = std::process::Command::new("bash")
+            .arg(d.join("array.sbatch"))
+            .env("SLURM_ARRAY_TASK_ID", task.to_string())
+            .env("SLURM_CPUS_PER_TASK", "1")
+            .status()
+            .unwrap();
+        assert!(status.success(), "task {task}");
+    }
+    let status = std::process::Command::new("bash")
+        .arg(d.join("merge.sbatch"))
+        .status()
+        .unwrap();
+    assert!(status.success(), "merge job");
+    let merged = json(&d.join("results").join("t0_a0.json"));
+    assert_eq!(merged["kind"], "spinball.multilevel");
+
+    let whole = dir.join("whole.json");
+    let mut args = vec!["lyapunov"];
+    args.extend(options);
+    args.extend([
+        "--allocation",
+        plan.to_str().unwrap(),
+        "--quiet",
+        "--json",
+        whole.to_str().unwrap(),
+    ]);
+    let run = spinball(&args);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert_eq!(untimed(merged), untimed(json(&whole)));
+
+    // A shard missing is refused by the merge.
+    let parts = d.join("parts");
+    let run = spinball(&[
+        "merge",
+        parts.join("t0_a0_s0.json").to_str().unwrap(),
+        parts.join("t0_a0_s1.json").to_str().unwrap(),
+        "--json",
+        dir.join("two.json").to_str().unwrap(),
+    ]);
+    assert_eq!(run.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&run.stderr);
+    assert!(err.contains("shard"), "{err}");
+}

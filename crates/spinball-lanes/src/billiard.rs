@@ -21,6 +21,7 @@ use crate::geom::{Geom, LaneCircle, LaneRectangle, LaneSegments, LaneSinai, Lane
 use crate::isa::Isa;
 use crate::kernels::{self, Kernel};
 use crate::outcome::{Flight, SpectrumStretch, Stretch};
+use crate::paused::{Partner, Paused};
 
 /// A multiple of every kernel's lane count on every level (32, 24, 16, 12,
 /// 8 trajectories). Callers that split an ensemble into chunks (and
@@ -207,19 +208,13 @@ impl<B: Boundary> LaneBilliard<B> {
         delta0: f64,
         collisions: u64,
     ) -> Result<Vec<Stretch>, LanesError> {
-        check_delta0(delta0).map_err(|e| LanesError::invalid("delta0", e.to_string()))?;
-        let ins = self.check_lcn(starts, directions, collisions)?;
-        let perturbations = starts
+        check_collisions(collisions)?;
+        let launched = self.start_fd(starts, directions, delta0)?;
+        Ok(self
+            .resume(&launched, collisions)?
             .iter()
-            .enumerate()
-            .map(|(index, s)| {
-                Perturbation::new(&self.table, s, &self.runner.law, delta0)
-                    .map_err(|source| LanesError::Perturbation { index, source })
-            })
-            .collect::<Result<Vec<_>, _>>()?;
-        by_key(&perturbations, &ins, |part, p| {
-            self.runner.finite_difference(part, p, collisions)
-        })
+            .map(Paused::stretch)
+            .collect())
     }
 
     /// The largest Lyapunov exponent by exact tangent dynamics, starting from
@@ -239,14 +234,117 @@ impl<B: Boundary> LaneBilliard<B> {
         directions: &[TangentVector],
         collisions: u64,
     ) -> Result<Vec<Stretch>, LanesError> {
-        let ins = self.check_lcn(starts, directions, collisions)?;
-        let units: Vec<Units> = starts
+        check_collisions(collisions)?;
+        let launched = self.start_tangent(starts, directions)?;
+        Ok(self
+            .resume(&launched, collisions)?
             .iter()
-            .map(|s| Units::new(&self.table, s, &self.runner.law))
-            .collect();
-        by_key(&units, &ins, |part, u| {
-            self.runner.tangent(part, u, collisions)
-        })
+            .map(Paused::stretch)
+            .collect())
+    }
+
+    /// The trajectories of [`lyapunov_fd`](Self::lyapunov_fd) before their
+    /// first collision, to be run in legs with [`resume`](Self::resume).
+    ///
+    /// # Errors
+    /// As [`lyapunov_fd`](Self::lyapunov_fd), without the run's errors.
+    pub fn start_fd(
+        &self,
+        starts: &[State],
+        directions: &[TangentVector],
+        delta0: f64,
+    ) -> Result<Vec<Paused>, LanesError> {
+        check_delta0(delta0).map_err(|e| LanesError::invalid("delta0", e.to_string()))?;
+        let ins = self.check_lcn(starts, directions)?;
+        ins.iter()
+            .enumerate()
+            .map(|(index, (s, d))| {
+                let p = Perturbation::new(&self.table, s, &self.runner.law, delta0)
+                    .map_err(|source| LanesError::Perturbation { index, source })?;
+                // The shadow as the scalar launches it (`Perturbation::offset`'s
+                // products and sums, in the kernels' order).
+                let (z, d, scaled) = (s.to_array(), d.to_array(), p.scaled());
+                let shadow = std::array::from_fn(|c| z[c] + d[c] * scaled[c]);
+                Ok(Paused::launched(*s, shadow, Partner::Shadow { delta0 }))
+            })
+            .collect()
+    }
+
+    /// The trajectories of [`lyapunov_tangent`](Self::lyapunov_tangent)
+    /// before their first collision, to be run in legs with
+    /// [`resume`](Self::resume).
+    ///
+    /// # Errors
+    /// As [`lyapunov_tangent`](Self::lyapunov_tangent), without the run's
+    /// errors.
+    pub fn start_tangent(
+        &self,
+        starts: &[State],
+        directions: &[TangentVector],
+    ) -> Result<Vec<Paused>, LanesError> {
+        let ins = self.check_lcn(starts, directions)?;
+        Ok(ins
+            .iter()
+            .map(|(s, d)| {
+                let from = Units::new(&self.table, s, &self.runner.law).measure(d);
+                Paused::launched(*s, d.to_array(), Partner::Tangent { from })
+            })
+            .collect())
+    }
+
+    /// `collisions` more collisions of each paused trajectory (all of one
+    /// method: all from [`start_fd`](Self::start_fd) with the same `delta0`,
+    /// or all from [`start_tangent`](Self::start_tangent)), in input order.
+    ///
+    /// Bitwise as if the trajectory had never stopped: `T_0` collisions then
+    /// `T_1 − T_0` more give the same [`Paused::stretch`] as `T_1` at once,
+    /// on every instruction set.
+    ///
+    /// # Errors
+    /// [`LanesError::InvalidOption`] for zero collisions or trajectories of
+    /// different methods; [`LanesError::Perturbation`] for a finite-difference
+    /// launch state `Perturbation::new` rejects; [`LanesError::NonFinite`]
+    /// for a trajectory that became non-finite (its whole run so far is what
+    /// the scalar path would fail on).
+    pub fn resume(&self, paused: &[Paused], collisions: u64) -> Result<Vec<Paused>, LanesError> {
+        check_collisions(collisions)?;
+        let Some(first) = paused.first() else {
+            return Ok(Vec::new());
+        };
+        if let Some(other) = paused.iter().find(|p| !same_kernel(&p.kind, &first.kind)) {
+            return Err(LanesError::invalid(
+                "paused",
+                format!(
+                    "one resume runs one method: got {:?} and {:?}",
+                    first.kind, other.kind
+                ),
+            ));
+        }
+        let law = &self.runner.law;
+        match first.kind {
+            Partner::Shadow { delta0 } => {
+                let perturbations = paused
+                    .iter()
+                    .enumerate()
+                    .map(|(index, p)| {
+                        Perturbation::new(&self.table, &p.launch, law, delta0)
+                            .map_err(|source| LanesError::Perturbation { index, source })
+                    })
+                    .collect::<Result<Vec<_>, _>>()?;
+                by_key(&perturbations, paused, |part, p| {
+                    self.runner.finite_difference(part, p, collisions)
+                })
+            }
+            Partner::Tangent { .. } => {
+                let units: Vec<Units> = paused
+                    .iter()
+                    .map(|p| Units::new(&self.table, &p.launch, law))
+                    .collect();
+                by_key(&units, paused, |part, u| {
+                    self.runner.tangent(part, u, collisions)
+                })
+            }
+        }
     }
 
     /// The Lyapunov spectrum by exact tangent dynamics: five vectors from
@@ -297,9 +395,7 @@ impl<B: Boundary> LaneBilliard<B> {
         &self,
         starts: &[State],
         directions: &[TangentVector],
-        collisions: u64,
     ) -> Result<Vec<(State, TangentVector)>, LanesError> {
-        check_collisions(collisions)?;
         check_lengths(starts.len(), directions.len())?;
         self.check_starts(starts)?;
         for d in directions {
@@ -350,14 +446,13 @@ impl Runner {
 
     fn finite_difference(
         &self,
-        ins: &[(State, TangentVector)],
+        ins: &[Paused],
         p: &Perturbation,
         collisions: u64,
-    ) -> Result<Vec<Stretch>, LanesError> {
+    ) -> Result<Vec<Paused>, LanesError> {
         let k = kernels::FiniteDifference {
             collisions,
             delta0: p.delta0(),
-            scaled: p.scaled(),
             inv_units: p.inv_units(),
         };
         self.run(&k, ins)
@@ -365,10 +460,10 @@ impl Runner {
 
     fn tangent(
         &self,
-        ins: &[(State, TangentVector)],
+        ins: &[Paused],
         units: &Units,
         collisions: u64,
-    ) -> Result<Vec<Stretch>, LanesError> {
+    ) -> Result<Vec<Paused>, LanesError> {
         let k = kernels::Tangent {
             collisions,
             units: *units,
@@ -426,6 +521,16 @@ impl Runner {
                 .flat_map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
                 .collect()
         })
+    }
+}
+
+/// Whether two paused trajectories run on the same kernel with the same
+/// constants.
+fn same_kernel(a: &Partner, b: &Partner) -> bool {
+    match (a, b) {
+        (Partner::Shadow { delta0: x }, Partner::Shadow { delta0: y }) => x == y,
+        (Partner::Tangent { .. }, Partner::Tangent { .. }) => true,
+        _ => false,
     }
 }
 

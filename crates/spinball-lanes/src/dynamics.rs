@@ -273,6 +273,17 @@ impl<L: Lanes> LogProduct<L> {
         }
     }
 
+    /// A product that already stands at `m · 2^e` (`m ∈ [1, 2)` per lane,
+    /// from [`parts`](Self::parts); `e` is added back outside the kernel).
+    #[inline(always)]
+    pub fn resume(m: L) -> Self {
+        LogProduct {
+            m,
+            e: L::Bits::splat(m.proof(), 0),
+            pushes: 0,
+        }
+    }
+
     /// Multiply by `f > 0` (finite, normal) in every lane.
     #[inline(always)]
     pub fn push(&mut self, f: L) {
@@ -286,11 +297,17 @@ impl<L: Lanes> LogProduct<L> {
     /// positive, finite and normal; the kernels detect that through the
     /// state, which then is not finite either).
     pub fn ln(&self, i: usize) -> f64 {
+        let (e, m) = self.parts(i);
+        e as f64 * std::f64::consts::LN_2 + m.ln()
+    }
+
+    /// The product in lane `i` as `(e, m)`: `m · 2^e`, `m ∈ [1, 2)`.
+    pub fn parts(&self, i: usize) -> (i64, f64) {
         let e = self
             .e
             .lane(i)
             .wrapping_sub(1023u64.wrapping_mul(self.pushes)) as i64;
-        e as f64 * std::f64::consts::LN_2 + self.m.lane(i).ln()
+        (e, self.m.lane(i))
     }
 }
 
@@ -333,6 +350,22 @@ impl<L: Lanes> ZeroRun<L> {
             run: zero,
             stuck: zero.ne(zero),
         }
+    }
+
+    /// A count that stands at `run` zero-time collisions in a row (lane by
+    /// lane, none stuck: a stuck lane's run is not resumed).
+    #[inline(always)]
+    pub fn resume(run: L) -> Self {
+        let zero = L::splat(run.proof(), 0.0);
+        ZeroRun {
+            run,
+            stuck: zero.ne(zero),
+        }
+    }
+
+    /// The current run of zero-time collisions in lane `i`.
+    pub fn run(&self, i: usize) -> f64 {
+        self.run.lane(i)
     }
 
     /// Count a collision that took `time`.

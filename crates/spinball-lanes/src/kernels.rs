@@ -22,7 +22,8 @@ use crate::dynamics::{
 use crate::geom::Geom;
 use crate::isa::ProvenBy;
 use crate::lanes::{BitsOps, Groups, Lanes, MAX_LANES, MaskOps, PerIsa};
-use crate::outcome::{Flight, SpectrumStretch, Stretch};
+use crate::outcome::{Flight, SpectrumStretch};
+use crate::paused::Paused;
 
 /// A computation over `N` trajectories at once.
 pub(crate) trait Kernel: Sync {
@@ -105,6 +106,16 @@ fn load_states<L: Lanes>(cpu: L::Needs, s: impl Fn(usize) -> State) -> [L; 5] {
         }
     }
     five(|c| L::load(cpu, &z[c]))
+}
+
+/// One number per lane.
+#[inline(always)]
+fn load_lane<L: Lanes>(cpu: L::Needs, x: impl Fn(usize) -> f64) -> L {
+    let mut z = [0.0; MAX_LANES];
+    for (i, zi) in z.iter_mut().enumerate().take(L::N) {
+        *zi = x(i);
+    }
+    L::load(cpu, &z)
 }
 
 /// The five components of `L::N` tangent vectors.
@@ -242,15 +253,13 @@ impl<L: Lanes> PlainStream<L> {
 pub(crate) struct FiniteDifference {
     pub collisions: u64,
     pub delta0: f64,
-    /// `δ0` times each coordinate's unit (`spinball_core::Perturbation`).
-    pub scaled: [f64; 5],
     /// `1 / unit` of each coordinate (powers of two).
     pub inv_units: [f64; 5],
 }
 
 impl Kernel for FiniteDifference {
-    type In = (State, TangentVector);
-    type Out = Stretch;
+    type In = Paused;
+    type Out = Paused;
     /// Registers per group: AVX-512 3, AVX2 4, SSE2 4, portable `f64` 4.
     type Groups = Groups<3, 4, 4, 4>;
     /// Two AVX2 and two SSE2 registers per group instead of four.
@@ -264,20 +273,20 @@ impl Kernel for FiniteDifference {
         cpu: L::Needs,
         g: &G,
         law: &Law,
-        ins: &[(State, TangentVector)],
-        out: &mut Vec<Stretch>,
+        ins: &[Paused],
+        out: &mut Vec<Paused>,
     ) {
         let delta0 = self.delta0;
         let inv_delta0 = 1.0 / delta0;
-        let z0 = load_states::<L>(cpu, |i| ins[i].0);
-        let d0 = load_vectors::<L>(cpu, |i| ins[i].1);
-        let mut r = Balls::new(z0);
-        let shell = Shell::Fixed(r.inv_shell(law));
-        let (scaled, inv_units) = (self.scaled, self.inv_units);
-        let mut s = Balls::new(five(|c| z0[c] + d0[c] * scaled[c]));
-        let mut logs = LogProduct::new(cpu);
-        let mut time = L::splat(cpu, 0.0);
-        let mut zero_run = ZeroRun::<L>::new(cpu);
+        let mut r = Balls::new(load_states::<L>(cpu, |i| ins[i].reference));
+        // The shell of the launch state, as `Ball::new` stored it.
+        let shell =
+            Shell::Fixed(Balls::new(load_states::<L>(cpu, |i| ins[i].launch)).inv_shell(law));
+        let inv_units = self.inv_units;
+        let mut s = Balls::new(load_vectors::<L>(cpu, |i| ins[i].partner_vector()));
+        let mut logs = LogProduct::resume(load_lane(cpu, |i| ins[i].log_mantissa));
+        let mut time = load_lane::<L>(cpu, |i| ins[i].time);
+        let mut zero_run = ZeroRun::resume(load_lane::<L>(cpu, |i| ins[i].zero_run));
         for _ in 0..self.collisions {
             // Both searches before either landing: the shadow's search (the
             // bulk of the work, independent of the reference) then fills the
@@ -302,26 +311,32 @@ impl Kernel for FiniteDifference {
             let k = L::splat(cpu, delta0) / dist;
             s = Balls::new(five(|c| zr[c] + d[c] * k));
         }
-        let ok = all_finite(&s.coords())
-            .and(time.is_finite())
-            .and(zero_run.moving());
+        let zs = s.coords();
+        let ok = all_finite(&zs).and(time.is_finite()).and(zero_run.moving());
         let z = r.coords();
-        out.extend((0..L::N).map(|i| Stretch {
-            log_stretch: if mask_lane::<L>(cpu, ok, i) {
-                logs.ln(i)
-            } else {
-                f64::NAN
-            },
-            time: time.lane(i),
-            collisions: self.collisions,
-            end: state_of(&z, i),
+        out.extend((0..L::N).map(|i| {
+            let (e, m) = logs.parts(i);
+            let log_exponent = ins[i].log_exponent.wrapping_add(e);
+            Paused {
+                reference: state_of(&z, i),
+                partner: state_of(&zs, i).to_array(),
+                log_mantissa: m,
+                log_exponent,
+                log_stretch: if mask_lane::<L>(cpu, ok, i) {
+                    log_exponent as f64 * std::f64::consts::LN_2 + m.ln()
+                } else {
+                    f64::NAN
+                },
+                time: time.lane(i),
+                zero_run: zero_run.run(i),
+                collisions: ins[i].collisions + self.collisions,
+                ..ins[i]
+            }
         }));
     }
 
-    fn is_sound(o: &Stretch) -> bool {
-        o.log_stretch.is_finite()
-            && o.time.is_finite()
-            && o.end.to_array().iter().all(|x| x.is_finite())
+    fn is_sound(o: &Paused) -> bool {
+        o.is_sound()
     }
 }
 
@@ -342,8 +357,8 @@ pub(crate) struct Tangent {
 }
 
 impl Kernel for Tangent {
-    type In = (State, TangentVector);
-    type Out = Stretch;
+    type In = Paused;
+    type Out = Paused;
     /// Registers per group: AVX-512 3, AVX2 4, SSE2 4, portable `f64` 4.
     type Groups = Groups<3, 4, 4, 4>;
     /// Two AVX2 and two SSE2 registers per group instead of four.
@@ -359,16 +374,22 @@ impl Kernel for Tangent {
         cpu: L::Needs,
         g: &G,
         law: &Law,
-        ins: &[(State, TangentVector)],
-        out: &mut Vec<Stretch>,
+        ins: &[Paused],
+        out: &mut Vec<Paused>,
     ) {
-        let mut r = Balls::<L>::new(load_states(cpu, |i| ins[i].0));
-        let shell = Shell::Fixed(r.inv_shell(law));
-        let mut v = load_vectors::<L>(cpu, |i| ins[i].1);
-        let mut time = L::splat(cpu, 0.0);
+        let mut r = Balls::<L>::new(load_states(cpu, |i| ins[i].reference));
+        // The shell of the launch state, as `Ball::new` stored it.
+        let shell =
+            Shell::Fixed(Balls::new(load_states::<L>(cpu, |i| ins[i].launch)).inv_shell(law));
+        // A vector that stopped was renormalised at the stop; it differs
+        // from the uninterrupted run's only by a power of two, which the
+        // tangent map (linear) carries exactly and the next
+        // renormalisation takes off again.
+        let mut v = load_vectors::<L>(cpu, |i| ins[i].partner_vector());
+        let mut time = load_lane::<L>(cpu, |i| ins[i].time);
         let mut e = L::Bits::splat(cpu, 0);
         let mut renorms = 0u64;
-        let mut zero_run = ZeroRun::<L>::new(cpu);
+        let mut zero_run = ZeroRun::resume(load_lane::<L>(cpu, |i| ins[i].zero_run));
         let mut left = self.collisions;
         while left > 0 {
             let run = left.min(RENORM_EVERY);
@@ -389,22 +410,27 @@ impl Kernel for Tangent {
         let z = r.coords();
         out.extend((0..L::N).map(|i| {
             let k = e.lane(i).wrapping_sub(1023u64.wrapping_mul(renorms)) as i64;
-            let from = self.units.measure(&ins[i].1);
-            Stretch {
+            let log_exponent = ins[i].log_exponent.wrapping_add(k);
+            Paused {
+                reference: state_of(&z, i),
+                partner: state_of(&v, i).to_array(),
+                log_exponent,
                 log_stretch: if mask_lane::<L>(cpu, ok, i) {
-                    (norm.lane(i) / from).ln() + k as f64 * std::f64::consts::LN_2
+                    (norm.lane(i) / ins[i].tangent_from()).ln()
+                        + log_exponent as f64 * std::f64::consts::LN_2
                 } else {
                     f64::NAN
                 },
                 time: time.lane(i),
-                collisions: self.collisions,
-                end: state_of(&z, i),
+                zero_run: zero_run.run(i),
+                collisions: ins[i].collisions + self.collisions,
+                ..ins[i]
             }
         }));
     }
 
-    fn is_sound(o: &Stretch) -> bool {
-        <FiniteDifference as Kernel>::is_sound(o)
+    fn is_sound(o: &Paused) -> bool {
+        o.is_sound()
     }
 }
 

@@ -86,8 +86,10 @@ pub mod isa;
 mod kernels;
 mod lanes;
 mod outcome;
+mod paused;
 
 pub use billiard::{CHUNK, LaneBilliard, has_lane_form};
 pub use error::LanesError;
 pub use isa::{Isa, IsaError};
 pub use outcome::{Flight, SpectrumStretch, Stretch};
+pub use paused::Paused;

@@ -11,10 +11,9 @@ use spinball_core::Billiard;
 use spinball_geometry::Boundary;
 
 use super::convergence::start_checkpoints;
-use super::measurement::Measurement;
 use super::multilevel::{LevelDraw, LevelSamples, LevelSource};
 use crate::error::AnalysisError;
-use crate::estimators::{Accumulator, Method};
+use crate::estimators::Method;
 use crate::run::{Engine, Ensemble, Starts, map_indices};
 
 /// An [`Ensemble`] (table, law, sampler, seed, method, engine, threads) as
@@ -25,10 +24,9 @@ use crate::run::{Engine, Ensemble, Starts, map_indices};
 /// `ic_rng(level_seed(seed, l), i)`: the level is part of the seed path, so
 /// the levels are independent samples, and a level's draws depend only on
 /// the seed, the level and the index (any thread count, any split into
-/// shards). The scalar engine reads the three run lengths off one run; the
-/// lane kernels return only a run's end, so the lane engine runs each
-/// trajectory once per run length it reads (the same trajectory, bitwise,
-/// up to each) and its cost per draw counts all of them.
+/// shards). Both engines read the three run lengths off one run of `T_l`
+/// collisions (the lane engine stops each trajectory at every read and
+/// resumes it, bitwise as if it had never stopped), so a draw costs `T_l`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct EnsembleLevels<B> {
     ensemble: Ensemble<B>,
@@ -197,10 +195,7 @@ impl<B: Boundary + Clone + Sync> LevelSource for EnsembleLevels<B> {
     }
 
     fn cost(&self, level: usize) -> f64 {
-        match self.ensemble.engine_used() {
-            Engine::Scalar => self.levels[level] as f64,
-            Engine::Lanes => self.reads(level).iter().sum::<u64>() as f64,
-        }
+        self.levels[level] as f64
     }
 
     fn draw(&self, level: usize, indices: Range<u64>) -> Result<Vec<LevelDraw>, AnalysisError> {
@@ -217,20 +212,12 @@ impl<B: Boundary + Clone + Sync> LevelSource for EnsembleLevels<B> {
                 })?
             }
             Engine::Lanes => {
-                let mut rows =
-                    vec![Vec::with_capacity(reads.len()); (indices.end - indices.start) as usize];
-                for &t in &reads {
-                    let run = self
-                        .ensemble
-                        .clone()
-                        .with_seed(seed)
-                        .with_collisions(t)
-                        .trajectories(indices.clone())?;
-                    for (row, traj) in rows.iter_mut().zip(run) {
-                        row.push(traj.exponent);
-                    }
-                }
-                rows
+                let e = self.ensemble.clone().with_seed(seed);
+                let billiard = Billiard::new(&e.table, e.law);
+                e.lane_reads(&billiard, indices.clone(), &reads)?
+                    .into_iter()
+                    .map(|row| row.iter().map(|t| t.exponent).collect())
+                    .collect()
             }
         };
         Ok(indices
@@ -245,11 +232,11 @@ impl<B: Boundary + Clone + Sync> LevelSource for EnsembleLevels<B> {
     }
 
     /// Finite differences: the paired difference `λ_fd − λ_tangent` on
-    /// the top level's initial conditions at `T_L` (same starts and
-    /// directions). Zero for the tangent method.
-    fn method_bias(&self, top: &LevelSamples) -> Result<Measurement, AnalysisError> {
-        if matches!(self.ensemble.method, Method::Tangent) {
-            return Ok(Measurement::new(0.0, 0.0));
+    /// the draws of `top` at `T_L` (same starts and directions). None for
+    /// the tangent method.
+    fn method_differences(&self, top: &LevelSamples) -> Result<Vec<f64>, AnalysisError> {
+        if matches!(self.ensemble.method, Method::Tangent) || top.draws.is_empty() {
+            return Ok(Vec::new());
         }
         let tangent = self
             .ensemble
@@ -258,15 +245,11 @@ impl<B: Boundary + Clone + Sync> LevelSource for EnsembleLevels<B> {
             .with_seed(self.level_seed(top.level))
             .with_collisions(top.collisions)
             .trajectories(top.first_index..top.end())?;
-        let d: Accumulator = top
+        Ok(top
             .draws
             .iter()
             .zip(&tangent)
             .map(|(fd, t)| fd.fine - t.exponent)
-            .collect();
-        Ok(Measurement::new(
-            d.mean().unwrap_or(0.0),
-            d.sem().unwrap_or(0.0),
-        ))
+            .collect())
     }
 }

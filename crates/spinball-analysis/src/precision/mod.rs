@@ -173,6 +173,14 @@
 //! [`Planner::plan_estimator`] predicts both from pilots and picks
 //! ([`EstimatorPlan`]: the kind, both plans, and why).
 //!
+//! A campaign of many processes (a SLURM job array) cannot top up
+//! adaptively: its tasks never see each other. [`Multilevel::allocate`]
+//! fixes the initial conditions per level from a pilot once, when the
+//! campaign is written ([`LevelAllocation`]); each task runs its block of
+//! every level ([`LevelAllocation::run_shard`]) and [`LevelShard::merge`]
+//! joins the blocks into bitwise the estimate of one process running the
+//! allocation whole.
+//!
 //! # Work–precision
 //!
 //! Work–precision sets: for one scene, what each method and engine buys
@@ -191,6 +199,7 @@ mod ensemble_levels;
 mod error_budget;
 mod estimator_choice;
 mod finite_time_bias;
+mod level_allocation;
 mod level_extrapolation;
 mod measurement;
 mod method_bias;
@@ -208,6 +217,7 @@ pub use ensemble_levels::{
 pub use error_budget::{ErrorBudget, Reference};
 pub use estimator_choice::{EstimatorKind, EstimatorPlan, MULTILEVEL_MARGIN, MultilevelPlan};
 pub use finite_time_bias::{BiasFit, BiasLaw, BiasRegime, FiniteTimeBias, MIN_CHECKPOINTS};
+pub use level_allocation::{LevelAllocation, LevelShard};
 pub use level_extrapolation::LevelExtrapolation;
 pub use measurement::{Measurement, dhf_product, normalised, paired_difference};
 pub use method_bias::MethodBias;

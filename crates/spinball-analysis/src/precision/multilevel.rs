@@ -60,16 +60,33 @@ pub trait LevelSource {
     /// The first failing initial condition's error.
     fn draw(&self, level: usize, indices: Range<u64>) -> Result<Vec<LevelDraw>, AnalysisError>;
 
-    /// The method bias at the top level (finite differences against exact
-    /// tangent dynamics), measured on the top level's draws; zero unless the
-    /// source overrides it.
+    /// Per draw of `top` (a piece of the top level), in order, the paired
+    /// difference between this source's exponent and a method without bias
+    /// (finite differences against exact tangent dynamics on the same
+    /// start); empty (no method bias) unless the source overrides it.
     ///
     /// # Errors
     /// As the run that measures it.
-    fn method_bias(&self, top: &LevelSamples) -> Result<Measurement, AnalysisError> {
+    fn method_differences(&self, top: &LevelSamples) -> Result<Vec<f64>, AnalysisError> {
         let _ = top;
-        Ok(Measurement::new(0.0, 0.0))
+        Ok(Vec::new())
     }
+
+    /// The method bias at the top level: the mean of
+    /// [`method_differences`](Self::method_differences) over `top` with its
+    /// standard error.
+    ///
+    /// # Errors
+    /// As [`method_differences`](Self::method_differences).
+    fn method_bias(&self, top: &LevelSamples) -> Result<Measurement, AnalysisError> {
+        Ok(method_bias_of(&self.method_differences(top)?))
+    }
+}
+
+/// Mean and standard error of paired method differences (zero for none).
+pub(crate) fn method_bias_of(differences: &[f64]) -> Measurement {
+    let d: Accumulator = differences.iter().copied().collect();
+    Measurement::new(d.mean().unwrap_or(0.0), d.sem().unwrap_or(0.0))
 }
 
 /// The draws of one level over a contiguous range of its initial
@@ -358,42 +375,9 @@ impl Multilevel {
         let mut method_bias = source.method_bias(samples.last().expect("levels"))?;
         let mut rounds = 0;
         for round in 1..=self.max_rounds {
-            let estimate = MultilevelEstimate::from_levels(&samples, method_bias, self)?;
-            let eps = self.target_rel * estimate.lambda().value.abs();
-            let b = estimate.budget;
-            // Unreachable only if the bias is above the target beyond two of
-            // its standard errors (more draws only shrink its uncertainty).
-            let bias_floor = b.finite_time_bias.value.hypot(b.method_bias.value);
-            let bias_sem = b.finite_time_bias.sem.hypot(b.method_bias.sem);
-            if bias_floor - 2.0 * bias_sem >= eps {
-                return Err(AnalysisError::TargetUnreachable {
-                    target: eps,
-                    floor: bias_floor,
-                });
-            }
-            let sq = |m: Measurement| m.value * m.value + m.sem * m.sem;
-            let eps_s2 =
-                (eps * eps - sq(b.finite_time_bias) - sq(b.method_bias)).max(0.25 * eps * eps);
-            let stats: Vec<LevelStats> = samples.iter().map(LevelSamples::stats).collect();
-            let variances: Vec<f64> = stats.iter().map(|s| s.variance).collect();
-            let costs: Vec<f64> = stats.iter().map(|s| s.cost).collect();
-            let want = giles_allocation(&variances, &costs, eps_s2);
-            if let Some((l, w)) = want
-                .iter()
-                .enumerate()
-                .find(|(_, w)| **w > self.max_ics as f64)
-            {
-                return Err(AnalysisError::invalid(
-                    "target",
-                    format!(
-                        "level {l} would need {w:.3e} initial conditions, more than max_ics = {}: aim at a larger target or raise max_ics",
-                        self.max_ics
-                    ),
-                ));
-            }
+            let want = self.allocation(&samples, method_bias)?;
             let mut topped = false;
-            for (s, w) in samples.iter_mut().zip(want) {
-                let target = (w.ceil() as u64).clamp(self.pilot_ics, self.max_ics);
+            for (s, target) in samples.iter_mut().zip(want) {
                 if target > s.end() {
                     s.merge(LevelSamples::run(source, s.level, s.end()..target)?)?;
                     topped = true;
@@ -408,6 +392,60 @@ impl Multilevel {
         let mut estimate = MultilevelEstimate::from_levels(&samples, method_bias, self)?;
         estimate.rounds = rounds;
         Ok(estimate)
+    }
+}
+
+impl Multilevel {
+    /// Initial conditions per level (Giles' allocation, between the pilot
+    /// size and `max_ics`) for the statistical error the target leaves once
+    /// the biases measured on `samples` are counted.
+    ///
+    /// # Errors
+    /// [`AnalysisError::TargetUnreachable`] if the bias at the top level
+    /// exceeds the target by more than two of its standard errors;
+    /// [`AnalysisError::InvalidOption`] if a level would need more than
+    /// `max_ics`; as [`MultilevelEstimate::from_levels`].
+    pub(crate) fn allocation(
+        &self,
+        samples: &[LevelSamples],
+        method_bias: Measurement,
+    ) -> Result<Vec<u64>, AnalysisError> {
+        let estimate = MultilevelEstimate::from_levels(samples, method_bias, self)?;
+        let eps = self.target_rel * estimate.lambda().value.abs();
+        let b = estimate.budget;
+        // Unreachable only if the bias is above the target beyond two of
+        // its standard errors (more draws only shrink its uncertainty).
+        let bias_floor = b.finite_time_bias.value.hypot(b.method_bias.value);
+        let bias_sem = b.finite_time_bias.sem.hypot(b.method_bias.sem);
+        if bias_floor - 2.0 * bias_sem >= eps {
+            return Err(AnalysisError::TargetUnreachable {
+                target: eps,
+                floor: bias_floor,
+            });
+        }
+        let sq = |m: Measurement| m.value * m.value + m.sem * m.sem;
+        let eps_s2 = (eps * eps - sq(b.finite_time_bias) - sq(b.method_bias)).max(0.25 * eps * eps);
+        let stats: Vec<LevelStats> = samples.iter().map(LevelSamples::stats).collect();
+        let variances: Vec<f64> = stats.iter().map(|s| s.variance).collect();
+        let costs: Vec<f64> = stats.iter().map(|s| s.cost).collect();
+        let want = giles_allocation(&variances, &costs, eps_s2);
+        if let Some((l, w)) = want
+            .iter()
+            .enumerate()
+            .find(|(_, w)| **w > self.max_ics as f64)
+        {
+            return Err(AnalysisError::invalid(
+                "target",
+                format!(
+                    "level {l} would need {w:.3e} initial conditions, more than max_ics = {}: aim at a larger target or raise max_ics",
+                    self.max_ics
+                ),
+            ));
+        }
+        Ok(want
+            .iter()
+            .map(|w| (w.ceil() as u64).clamp(self.pilot_ics, self.max_ics))
+            .collect())
     }
 }
 

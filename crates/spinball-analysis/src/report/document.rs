@@ -12,7 +12,7 @@ use thiserror::Error;
 
 use super::figure::FigureDocument;
 use super::lyapunov::LyapunovDocument;
-use super::multilevel::MultilevelDocument;
+use super::multilevel::{MultilevelDocument, MultilevelPartialDocument};
 use super::orbits::OrbitsDocument;
 use super::partial::PartialDocument;
 use super::phase_space::{
@@ -64,6 +64,10 @@ pub enum Document {
     /// lyapunov` or `sweep` with `--estimator multilevel`).
     #[serde(rename = "spinball.multilevel")]
     Multilevel(MultilevelDocument),
+    /// A shard of a multilevel campaign (`spinball slurm --estimator
+    /// multilevel`).
+    #[serde(rename = "spinball.multilevel.partial")]
+    MultilevelPartial(MultilevelPartialDocument),
     /// The stability diagram of periodic orbits (`spinball orbits`).
     #[serde(rename = "spinball.orbits")]
     Orbits(OrbitsDocument),
@@ -162,6 +166,7 @@ impl Document {
             Document::SpectrumPartial(_) => "spinball.spectrum.partial",
             Document::Sweep(_) => "spinball.sweep",
             Document::Multilevel(_) => "spinball.multilevel",
+            Document::MultilevelPartial(_) => "spinball.multilevel.partial",
             Document::Orbits(_) => "spinball.orbits",
             Document::Section(_) => "spinball.section",
             Document::SectionPartial(_) => "spinball.section.partial",

@@ -49,6 +49,7 @@
 //! | `spinball.spectrum.partial` | [`SpectrumDocument`] | a spectrum shard |
 //! | `spinball.sweep` | [`SweepDocument`] | `sweep` |
 //! | `spinball.multilevel` | [`MultilevelDocument`] | `lyapunov`, `sweep` with `--estimator multilevel` |
+//! | `spinball.multilevel.partial` | [`MultilevelPartialDocument`] | a shard of `slurm --estimator multilevel` |
 //! | `spinball.orbits` | [`OrbitsDocument`] | `orbits` |
 //! | `spinball.section` | [`SectionDocument`] | `section`, `merge` |
 //! | `spinball.section.partial` | [`SectionPartialDocument`] | a section shard |
@@ -102,7 +103,9 @@ pub use document::{Document, DocumentError, SCHEMA, SCHEMA_0_1};
 pub use figure::FigureDocument;
 pub use lyapunov::LyapunovDocument;
 #[cfg(feature = "serde")]
-pub use multilevel::{MultilevelDocument, MultilevelPoint};
+pub use multilevel::{
+    MultilevelDocument, MultilevelPartialDocument, MultilevelPoint, MultilevelShardPoint,
+};
 pub use names::{IcSource, MethodName};
 #[cfg(feature = "serde")]
 pub use orbits::OrbitsDocument;

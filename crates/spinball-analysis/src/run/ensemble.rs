@@ -308,6 +308,26 @@ impl<B: Boundary + Sync> Ensemble<B> {
         billiard: &Billiard<&B>,
         indices: Range<u64>,
     ) -> Result<Vec<TrajectoryStats>, AnalysisError> {
+        let rows = self.lane_reads(billiard, indices, &[self.collisions])?;
+        Ok(rows.into_iter().flatten().collect())
+    }
+
+    /// The lane-kernel runs of `indices` read at each run length of
+    /// `reads` (increasing): per index, its statistics at each read, in
+    /// order. The trajectories stop at each read and go on from there
+    /// ([`LaneBilliard::resume`]), so a read costs nothing beyond the
+    /// collisions up to the longest, and each read is bitwise a run of that
+    /// length.
+    ///
+    /// # Errors
+    /// As [`trajectories`](Self::trajectories) with `collisions` the read
+    /// that failed.
+    pub(crate) fn lane_reads(
+        &self,
+        billiard: &Billiard<&B>,
+        indices: Range<u64>,
+        reads: &[u64],
+    ) -> Result<Vec<Vec<TrajectoryStats>>, AnalysisError> {
         let lanes = LaneBilliard::new(&self.table, self.law).map_err(AnalysisError::Lanes)?;
         map_chunks(indices, CHUNK as u64, self.threads, |range| {
             let lo = range.start;
@@ -320,30 +340,46 @@ impl<B: Boundary + Sync> Ensemble<B> {
                 starts.push(state);
                 directions.push(random_direction(&mut rng));
             }
-            let stretches = match self.method {
-                Method::FiniteDifference { delta0 } => {
-                    lanes.lyapunov_fd(&starts, &directions, delta0, self.collisions)
-                }
-                Method::Tangent => lanes.lyapunov_tangent(&starts, &directions, self.collisions),
+            let mut paused = match self.method {
+                Method::FiniteDifference { delta0 } => lanes.start_fd(&starts, &directions, delta0),
+                Method::Tangent => lanes.start_tangent(&starts, &directions),
             }
-            .map_err(|e| self.lane_error(billiard, e, lo))?;
-            Ok(range
-                .zip(stretches)
-                .map(|(index, s)| TrajectoryStats {
-                    index,
-                    exponent: s.exponent(),
-                    per_collision: s.per_collision(),
-                    time: s.time,
-                    collisions: s.collisions,
-                })
-                .collect())
+            .map_err(|e| self.lane_error(billiard, e, lo, reads[0]))?;
+            let mut rows: Vec<Vec<TrajectoryStats>> = range
+                .clone()
+                .map(|_| Vec::with_capacity(reads.len()))
+                .collect();
+            let mut done = 0;
+            for &t in reads {
+                paused = lanes
+                    .resume(&paused, t - done)
+                    .map_err(|e| self.lane_error(billiard, e, lo, t))?;
+                done = t;
+                for ((row, index), p) in rows.iter_mut().zip(range.clone()).zip(&paused) {
+                    let s = p.stretch();
+                    row.push(TrajectoryStats {
+                        index,
+                        exponent: s.exponent(),
+                        per_collision: s.per_collision(),
+                        time: s.time,
+                        collisions: s.collisions,
+                    });
+                }
+            }
+            Ok(rows)
         })
     }
 
     /// A lane-kernel error as the scalar path reports it: the launch error
     /// with its absolute index, and for a trajectory that went non-finite
     /// the scalar path's own error for that initial condition.
-    fn lane_error(&self, billiard: &Billiard<&B>, e: LanesError, first: u64) -> AnalysisError {
+    fn lane_error(
+        &self,
+        billiard: &Billiard<&B>,
+        e: LanesError,
+        first: u64,
+        collisions: u64,
+    ) -> AnalysisError {
         match e {
             LanesError::Launch { index, source } => AnalysisError::Launch {
                 index: first + index as u64,
@@ -356,7 +392,7 @@ impl<B: Boundary + Sync> Ensemble<B> {
                     &self.starts,
                     self.seed,
                     index,
-                    self.collisions,
+                    collisions,
                     self.method,
                 ) {
                     Err(scalar) => scalar,

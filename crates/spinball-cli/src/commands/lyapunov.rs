@@ -7,7 +7,8 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use clap::Args;
-use spinball_analysis::report::PartialDocument;
+use spinball_analysis::precision::LevelShard;
+use spinball_analysis::report::{MultilevelPoint, PartialDocument};
 use spinball_analysis::run::{
     Ensemble, LyapunovEstimate, PartialRun, RunDifference, Shard, TrajectoryStats,
 };
@@ -15,7 +16,10 @@ use spinball_geometry::Built;
 
 use crate::documents::{read_partial, write_partial};
 use crate::error::CliError;
-use crate::estimator_args::{EstimatorArgs, run_multilevel, write_multilevel};
+use crate::estimator_args::{
+    EstimatorArgs, read_allocation, run_allocation_shard, run_multilevel, write_multilevel,
+    write_multilevel_partial,
+};
 use crate::files::{check_writable, remove_regular};
 use crate::output::OutputArgs;
 use crate::pictures::{check_png, lyapunov_png};
@@ -335,9 +339,12 @@ fn lyapunov_multilevel(
     args: &LyapunovArgs,
     options: &spinball_analysis::precision::Multilevel,
 ) -> Result<(), CliError> {
+    if let Some(path) = &args.estimator.allocation {
+        return lyapunov_allocation(args, path);
+    }
     if args.run.shard.is_some() || args.checkpoint.resume {
         return Err(CliError::Usage(
-            "--estimator multilevel plans its levels as it goes: it takes no --shard or --resume"
+            "--estimator multilevel plans its levels as it goes: it takes no --shard or --resume (a campaign fixes them with --allocation; see spinball slurm)"
                 .into(),
         ));
     }
@@ -358,5 +365,53 @@ fn lyapunov_multilevel(
     match &args.out.json {
         Some(path) => write_multilevel(path, &points),
         None => Ok(()),
+    }
+}
+
+/// `spinball lyapunov --estimator multilevel --allocation FILE`: the
+/// allocation run whole (a `spinball.multilevel` result), or with --shard
+/// that shard's block of every level (a `spinball.multilevel.partial` for
+/// `spinball merge`).
+fn lyapunov_allocation(args: &LyapunovArgs, path: &Path) -> Result<(), CliError> {
+    if args.checkpoint.resume || args.out.csv.is_some() || args.out.npy.is_some() {
+        return Err(CliError::Usage(
+            "--allocation writes --json only and takes no --resume".into(),
+        ));
+    }
+    let allocation = read_allocation(path)?;
+    let ensembles = args.run.ensembles()?;
+    let [ensemble] = ensembles.as_slice() else {
+        return Err(CliError::Usage(format!(
+            "--allocation is made for one alpha, got {}",
+            ensembles.len()
+        )));
+    };
+    args.out.check()?;
+    match args.run.shard {
+        Some(shard) => {
+            let Some(json) = &args.out.json else {
+                return Err(CliError::Usage(
+                    "a shard of an --allocation needs --json for its partial result".into(),
+                ));
+            };
+            let point = run_allocation_shard(ensemble, &allocation, shard)?;
+            write_multilevel_partial(json, vec![point])
+        }
+        None => {
+            let point = run_allocation_shard(ensemble, &allocation, Shard::WHOLE)?;
+            let estimate = LevelShard::merge(std::slice::from_ref(&point.shard))
+                .map_err(|e| CliError::Failed(format!("alpha = {}: {e}", point.alpha)))?;
+            let point = MultilevelPoint {
+                alpha: point.alpha,
+                estimate,
+            };
+            if !args.out.quiet {
+                print(&format!("alpha = {}\n{}\n", point.alpha, point.estimate))?;
+            }
+            match &args.out.json {
+                Some(json) => write_multilevel(json, &[point]),
+                None => Ok(()),
+            }
+        }
     }
 }

@@ -9,7 +9,8 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use spinball_analysis::report::{
-    Document, KacPartialDocument, PartialDocument, SectionPartialDocument, SpectrumDocument,
+    Document, KacPartialDocument, MultilevelPartialDocument, PartialDocument,
+    SectionPartialDocument, SpectrumDocument,
 };
 use spinball_analysis::run::MergeError;
 
@@ -19,14 +20,16 @@ use crate::commands::section::write_section;
 use crate::commands::spectrum::write_spectrum;
 use crate::documents::read_document;
 use crate::error::CliError;
+use crate::estimator_args::write_multilevel;
 use crate::output::OutputArgs;
+use crate::stdout::print;
 
 /// The arguments of `spinball merge`.
 #[derive(Debug, Clone, Args)]
 pub struct MergeArgs {
     /// The partial results (the --json files of every shard of a
-    /// `lyapunov`, `ftle`, `spectrum`, `ftle-map`, `section` or `kac` run),
-    /// in any order.
+    /// `lyapunov`, `ftle`, `spectrum`, `ftle-map`, `section` or `kac` run,
+    /// or of a multilevel campaign), in any order.
     #[arg(required = true)]
     pub parts: Vec<PathBuf>,
     #[command(flatten)]
@@ -135,6 +138,27 @@ pub fn merge(args: &MergeArgs) -> Result<(), CliError> {
             }
             let merged = SpectrumDocument::merge(&docs).map_err(CliError::usage)?;
             write_spectrum(&merged, &args.out)
+        }
+        Document::MultilevelPartial(first) => {
+            if args.out.csv.is_some() || args.out.npy.is_some() {
+                return Err(CliError::Usage(
+                    "multilevel shards merge into --json only (their levels have different numbers of initial conditions)".into(),
+                ));
+            }
+            let docs = gather(args, first, |d| match d {
+                Document::MultilevelPartial(p) => Ok(p),
+                other => Err(other.kind()),
+            })?;
+            let merged = MultilevelPartialDocument::merge(&docs).map_err(CliError::usage)?;
+            if !args.out.quiet {
+                for p in &merged.points {
+                    print(&format!("alpha = {}\n{}\n", p.alpha, p.estimate))?;
+                }
+            }
+            match &args.out.json {
+                Some(path) => write_multilevel(path, &merged.points),
+                None => Ok(()),
+            }
         }
         Document::FtleMapPartial(first) => merge_maps(first.part, &args.parts[1..], &args.out),
         Document::SectionPartial(first) => {

@@ -7,9 +7,11 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use serde::Serialize;
+use spinball_analysis::precision::Multilevel;
 
 use crate::documents::write_json;
 use crate::error::CliError;
+use crate::estimator_args::{EstimatorArgs, allocate_multilevel};
 use crate::output::write_text;
 use crate::run_args::RunArgs;
 use crate::stdout::print;
@@ -20,6 +22,11 @@ use crate::table_arg::read_table;
 pub struct SlurmArgs {
     #[command(flatten)]
     pub run: RunArgs,
+    /// `--estimator multilevel --target-error E`: the allocation (levels,
+    /// initial conditions per level) is planned from a pilot once, now,
+    /// for every table and α; each task runs its shard of every level.
+    #[command(flatten)]
+    pub estimator: EstimatorArgs,
     /// More tables for the campaign (repeat the option).
     #[arg(long = "and-table", value_name = "TABLE")]
     pub more_tables: Vec<String>,
@@ -146,7 +153,13 @@ pub fn slurm(args: &SlurmArgs) -> Result<(), CliError> {
         ));
     }
     run.ensembles()?;
-    if args.shards == 0 || args.shards > run.ics {
+    let multilevel = args.estimator.multilevel()?;
+    if args.estimator.allocation.is_some() {
+        return Err(CliError::Usage(
+            "spinball slurm plans the multilevel allocations itself; drop --allocation".into(),
+        ));
+    }
+    if args.shards == 0 || (multilevel.is_none() && args.shards > run.ics) {
         return Err(CliError::Usage(format!(
             "--shards {}: must be between 1 and --ics ({})",
             args.shards, run.ics
@@ -176,6 +189,9 @@ pub fn slurm(args: &SlurmArgs) -> Result<(), CliError> {
         .and_then(|()| fs::create_dir_all(args.dir.join("results")))
         .map_err(|e| CliError::Failed(format!("cannot create {}: {e}", args.dir.display())))?;
     let dir = fs::canonicalize(&args.dir).map_err(CliError::failed)?;
+    if let Some(options) = &multilevel {
+        write_allocations(run, &tables, options, &dir)?;
+    }
     let d = quote(&dir.display().to_string());
     let exe = quote(&exe.display().to_string());
     let n_tables = tables.len() as u64;
@@ -190,6 +206,30 @@ pub fn slurm(args: &SlurmArgs) -> Result<(), CliError> {
         .map(|p| format!("#SBATCH --partition={p}\n"))
         .unwrap_or_default();
 
+    let task = match (&multilevel, args.estimator.target_error) {
+        (Some(_), Some(target)) => format!(
+            "exec {exe} lyapunov --table \"${{TABLES[$t]}}\" --alpha \"${{ALPHAS[$a]}}\" \\
+  --shard \"$shard/$SHARDS\" --threads \"${{SLURM_CPUS_PER_TASK:-1}}\" \\
+  {options} --estimator multilevel --target-error {target} \\
+  --allocation {d}/plans/t${{t}}_a${{a}}.json --quiet --json \"$out\"
+"
+        ),
+        _ => format!(
+            "# A task stopped at its time limit saved its checkpoint: resubmitted, it resumes.
+resume=()
+if [ -f \"$out.partial\" ]; then resume=(--resume); fi
+exec {exe} lyapunov --table \"${{TABLES[$t]}}\" --alpha \"${{ALPHAS[$a]}}\" \\
+  --shard \"$shard/$SHARDS\" --threads \"${{SLURM_CPUS_PER_TASK:-1}}\" \\
+  {options} --time-limit {stop_after} --quiet --json \"$out\" \"${{resume[@]}}\"
+"
+        ),
+    };
+    // Multilevel results are --json only.
+    let csv = if multilevel.is_some() {
+        String::new()
+    } else {
+        format!(" --csv {d}/results/t${{t}}_a${{a}}.csv")
+    };
     let mut array = String::new();
     let _ = write!(
         array,
@@ -211,13 +251,7 @@ rest=$(( id / SHARDS ))
 a=$(( rest % ${{#ALPHAS[@]}} ))
 t=$(( rest / ${{#ALPHAS[@]}} ))
 out={d}/parts/t${{t}}_a${{a}}_s${{shard}}.json
-# A task stopped at its time limit saved its checkpoint: resubmitted, it resumes.
-resume=()
-if [ -f \"$out.partial\" ]; then resume=(--resume); fi
-exec {exe} lyapunov --table \"${{TABLES[$t]}}\" --alpha \"${{ALPHAS[$a]}}\" \\
-  --shard \"$shard/$SHARDS\" --threads \"${{SLURM_CPUS_PER_TASK:-1}}\" \\
-  {options} --time-limit {stop_after} --quiet --json \"$out\" \"${{resume[@]}}\"
-",
+{task}",
         last = tasks - 1,
         shards = args.shards,
         cpus = args.cpus_per_task,
@@ -240,7 +274,7 @@ exec {exe} lyapunov --table \"${{TABLES[$t]}}\" --alpha \"${{ALPHAS[$a]}}\" \\
 for t in $(seq 0 {tl}); do
   for a in $(seq 0 {al}); do
     {exe} merge --quiet {d}/parts/t${{t}}_a${{a}}_s*.json \\
-      --json {d}/results/t${{t}}_a${{a}}.json --csv {d}/results/t${{t}}_a${{a}}.csv
+      --json {d}/results/t${{t}}_a${{a}}.json{csv}
   done
 done
 ",
@@ -296,6 +330,37 @@ echo \"array job $array, merge job $merge\"
         dir.display(),
         dir.display()
     ))
+}
+
+/// The multilevel allocation of every (table, α) from a pilot, written to
+/// `dir/plans/t{t}_a{a}.json` for the tasks (planned once, so every shard
+/// runs its block of the same levels).
+fn write_allocations(
+    run: &RunArgs,
+    tables: &[String],
+    options: &Multilevel,
+    dir: &Path,
+) -> Result<(), CliError> {
+    fs::create_dir_all(dir.join("plans"))
+        .map_err(|e| CliError::Failed(format!("cannot create {}/plans: {e}", dir.display())))?;
+    for (t, table) in tables.iter().enumerate() {
+        let mut one = run.clone();
+        one.table.clone_from(table);
+        for (a, ensemble) in one.ensembles()?.iter().enumerate() {
+            let allocation = allocate_multilevel(ensemble, options)?;
+            print(&format!(
+                "table {t}, alpha = {}: levels {:?}, initial conditions {:?}\n",
+                ensemble.alpha(),
+                allocation.levels,
+                allocation.ics
+            ))?;
+            write_json(
+                &dir.join("plans").join(format!("t{t}_a{a}.json")),
+                &allocation,
+            )?;
+        }
+    }
+    Ok(())
 }
 
 #[cfg(unix)]

@@ -148,6 +148,11 @@ pub fn sweep(args: &SweepArgs) -> Result<(), CliError> {
     // Fail on an unwritable path now, not after the computation.
     check_writable("json", &args.json)?;
     if let Some(options) = args.estimator.multilevel()? {
+        if args.estimator.allocation.is_some() {
+            return Err(CliError::Usage(
+                "--allocation is for one alpha: run it with spinball lyapunov".into(),
+            ));
+        }
         let mut points = Vec::new();
         for law in laws {
             let point = run_multilevel(&args.ensemble(law), &options)?;

@@ -8,6 +8,7 @@ use super::*;
 use crate::geom::LaneStadium;
 use crate::isa::Baseline;
 use crate::lanes::Wide;
+use crate::paused::Partner;
 
 /// The portable lane type (used off x86) gives the numbers of the
 /// one-lane reference, tails included.
@@ -41,20 +42,35 @@ fn portable_lanes_match_one_lane() {
     let fd = FiniteDifference {
         collisions: 500,
         delta0: 1e-7,
-        scaled: [1e-7; 5],
         inv_units: [1.0; 5],
     };
+    let shadows: Vec<Paused> = ins
+        .iter()
+        .map(|(s, d)| {
+            let (z, d) = (s.to_array(), d.to_array());
+            let shadow = std::array::from_fn(|c| z[c] + d[c] * 1e-7);
+            Paused::launched(*s, shadow, Partner::Shadow { delta0: 1e-7 })
+        })
+        .collect();
     assert_eq!(
-        run_chunks::<_, _, Wide<f64, 4>, _>(Baseline, &g, &l, &fd, &ins),
-        run_chunks::<_, _, f64, _>(Baseline, &g, &l, &fd, &ins)
+        run_chunks::<_, _, Wide<f64, 4>, _>(Baseline, &g, &l, &fd, &shadows),
+        run_chunks::<_, _, f64, _>(Baseline, &g, &l, &fd, &shadows)
     );
+    let units = Units::new(&table, &ins[0].0, &law);
     let tangent = Tangent {
         collisions: 500,
-        units: Units::new(&table, &ins[0].0, &law),
+        units,
     };
+    let vectors: Vec<Paused> = ins
+        .iter()
+        .map(|(s, d)| {
+            let from = units.measure(d);
+            Paused::launched(*s, d.to_array(), Partner::Tangent { from })
+        })
+        .collect();
     assert_eq!(
-        run_chunks::<_, _, Wide<f64, 4>, _>(Baseline, &g, &l, &tangent, &ins),
-        run_chunks::<_, _, f64, _>(Baseline, &g, &l, &tangent, &ins)
+        run_chunks::<_, _, Wide<f64, 4>, _>(Baseline, &g, &l, &tangent, &vectors),
+        run_chunks::<_, _, f64, _>(Baseline, &g, &l, &tangent, &vectors)
     );
     let spectrum = Spectrum {
         collisions: 500,
@@ -161,10 +177,12 @@ fn counts<B: spinball_geometry::Boundary, G: Geom>(
     let fd = FiniteDifference {
         collisions: N,
         delta0: 1e-7,
-        scaled: [1e-7; 5],
         inv_units: [1.0; 5],
     };
-    run_chunks::<_, _, Counted, _>(Baseline, g, l, &fd, &[(s, d)]);
+    let (z, dz) = (s.to_array(), d.to_array());
+    let shadow = std::array::from_fn(|c| z[c] + dz[c] * 1e-7);
+    let launched = Paused::launched(s, shadow, Partner::Shadow { delta0: 1e-7 });
+    run_chunks::<_, _, Counted, _>(Baseline, g, l, &fd, &[launched]);
     let fd = report("fd", 1);
     run_chunks::<_, _, Counted, _>(
         Baseline,
@@ -174,7 +192,13 @@ fn counts<B: spinball_geometry::Boundary, G: Geom>(
             collisions: N,
             units: Units::new(table, &s, law),
         },
-        &[(s, d)],
+        &[Paused::launched(
+            s,
+            d.to_array(),
+            Partner::Tangent {
+                from: Units::new(table, &s, law).measure(&d),
+            },
+        )],
     );
     let tangent = report("tangent", 1);
     let spectrum = Spectrum {
