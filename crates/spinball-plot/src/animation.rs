@@ -17,10 +17,10 @@ use crate::error::PlotError;
 use crate::font;
 use crate::gif_writer::GifWriter;
 use crate::mp4_writer::Mp4Writer;
-use spinball_geometry::{Outline, ToOutline};
 use crate::plot::{MAX_SIDE, MIN_SIDE, titled};
 use crate::style::Style;
 use crate::table_plot::{draw_walls, table_chart};
+use spinball_geometry::{Outline, ToOutline};
 
 /// The file kinds a film is written as, told by the path's extension.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
