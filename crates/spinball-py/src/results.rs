@@ -9,8 +9,8 @@ use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
-use spinball_analysis::report::{Document, LyapunovDocument};
-use spinball_analysis::run::{LyapunovEstimate, Provenance, SpectrumEstimate};
+use spinball_analysis::report::{Document, LyapunovDocument, SpectrumDocument};
+use spinball_analysis::run::{LyapunovEstimate, Provenance, SpectrumEstimate, TableRecord};
 
 use crate::errors::{analysis, value_error};
 use crate::ftle::PyFtleDistribution;
@@ -338,6 +338,8 @@ pub struct PySpectrumResult {
     pub(crate) inner: SpectrumEstimate,
     pub(crate) alpha: f64,
     pub(crate) table: String,
+    /// The table as results record it (for `to_json`'s document).
+    pub(crate) record: TableRecord,
 }
 
 impl PySpectrumResult {
@@ -463,12 +465,27 @@ impl PySpectrumResult {
     fn wall_time_s(&self) -> f64 {
         self.inner.wall_time_s
     }
-    /// The Rust result's serde JSON (`indent` spaces per level, or compact).
+    /// The result document the command line writes for the same run
+    /// (`spinball spectrum --json`: kind `spinball.spectrum`, one point),
+    /// compact or indented by `indent` spaces per level.
     #[pyo3(signature = (indent = None))]
     fn to_json(&self, indent: Option<usize>) -> PyResult<String> {
-        json(&self.inner, indent)
+        let first = self.inner.first_index;
+        let doc = Document::Spectrum(SpectrumDocument::new(
+            self.record.clone(),
+            vec![self.alpha],
+            None,
+            first..first + self.inner.n_ics,
+            vec![self.inner.clone()],
+        ));
+        match indent {
+            None => doc.to_json(),
+            Some(n) => doc.to_json_indent(n),
+        }
+        .map_err(|e| PyRuntimeError::new_err(format!("cannot serialise the result: {e}")))
     }
-    /// `json.loads(self.to_json())`.
+    /// The result's fields as a dict (the one point of `to_json()`'s
+    /// document).
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         loads(py, &json(&self.inner, None)?)
     }

@@ -13,7 +13,7 @@ use spinball_analysis::AnalysisError;
 use spinball_analysis::estimators::{Method, PAPER_DELTA0, SpectrumOptions};
 use spinball_analysis::run::{
     AlphaSweep, Control, Engine, Ensemble, RunDefaults, SpectrumDefaults, SpectrumEstimate,
-    Threads, spectrum_ensemble,
+    TableRecord, Threads, spectrum_ensemble,
 };
 use spinball_core::{Billiard, Sampler, SpinLaw, State};
 use spinball_geometry::Boundary;
@@ -465,5 +465,6 @@ pub fn spectrum(
         inner,
         alpha: law.alpha(),
         table: table.spec(),
+        record: with_table!(&table, |t| TableRecord::of(t)),
     })
 }

@@ -51,3 +51,35 @@ def test_fd_spectrum_and_qr_interval():
 def test_bad_spectrum_arguments(kwargs, words):
     with pytest.raises(ValueError, match=words):
         sb.spectrum("stadium:a=1", 0.5, **kwargs)
+
+
+def test_to_json_is_the_document_the_command_line_writes(tmp_path):
+    # One schema: to_json() is the `spinball.spectrum` document of
+    # `spinball spectrum --json` for the same run (wall time aside).
+    import json
+    import os
+    import shutil
+    import subprocess
+
+    s = sb.spectrum("stadium:a=1", 0.5, ics=4, collisions=500, seed=3, method="tangent")
+    doc = json.loads(s.to_json())
+    assert doc["kind"] == "spinball.spectrum" and doc["schema"] == 2
+    assert doc["alphas"] == [0.5] and len(doc["points"]) == 1
+    assert doc["points"][0]["mean"] == list(s.mean)
+    exe = os.environ.get("SPINBALL") or shutil.which("spinball")
+    if exe is None:
+        pytest.skip("the spinball command line is not built (set SPINBALL)")
+    out = tmp_path / "s.json"
+    subprocess.run(
+        [exe, "spectrum", "--table", "stadium:a=1", "--alpha", "0.5", "--ics", "4",
+         "--collisions", "500", "--seed", "3", "--method", "tangent", "--json", str(out), "--quiet"],
+        check=True,
+    )
+    cli = json.loads(out.read_text())
+    for d in (doc, cli):
+        for p in d["points"]:
+            # The wall time differs, and with it the record's checksum.
+            p.pop("wall_time_s", None)
+            p.pop("checksum", None)
+        d.pop("version", None)
+    assert doc == cli

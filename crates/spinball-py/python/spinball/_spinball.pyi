@@ -255,7 +255,9 @@ class SpectrumResult:
     n_ics: int
     first_index: int
     wall_time_s: float
-    def to_json(self, indent: Optional[int] = None) -> str: ...
+    def to_json(self, indent: Optional[int] = None) -> str:
+        """The ``spinball.spectrum`` document ``spinball spectrum --json`` writes for the same run."""
+        ...
     def to_dict(self) -> Dict[str, Any]: ...
 
 def read_results(text: str) -> List[LyapunovResult]:
