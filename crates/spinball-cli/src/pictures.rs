@@ -6,7 +6,7 @@ use std::path::Path;
 
 use spinball_analysis::estimators::{FtleDistribution, PlusMinus, THRESHOLD_BAND};
 use spinball_analysis::phase_space::FtleMap;
-use spinball_analysis::run::LyapunovEstimate;
+use spinball_analysis::run::{LyapunovEstimate, Shard};
 use spinball_geometry::{Boundary, DVec2, ToOutline};
 use spinball_plot::{
     Colorbar, Grid, HistogramPlot, LineKind, LinePlot, MapPlot, Marker, Plot, Series, TablePlot,
@@ -18,6 +18,19 @@ use crate::files::check_writable;
 
 /// Size of every `--png` picture (pixels): width × height.
 pub const PNG_SIZE: (u32, u32) = (1200, 800);
+
+/// [`check_png`] for a picture of a whole run: refused on a shard, which
+/// holds only part of it (`whole`: what the picture draws and why a shard
+/// cannot, e.g. "map: a shard holds only some of its cells").
+///
+/// # Errors
+/// [`CliError::Usage`] saying what is wrong.
+pub fn check_whole_png(path: &Path, shard: Shard, whole: &str) -> Result<(), CliError> {
+    if shard.count > 1 {
+        return Err(CliError::Usage(format!("--png draws a whole {whole}")));
+    }
+    check_png(path)
+}
 
 /// Check, before a run, that `--png path` can be written: it ends in
 /// `.png` and can be replaced whole ([`check_writable`]).

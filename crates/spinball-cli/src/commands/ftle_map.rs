@@ -16,7 +16,7 @@ use crate::documents::read_document;
 use crate::error::CliError;
 use crate::output::OutputArgs;
 use crate::phase_args::PhaseArgs;
-use crate::pictures::{check_png, ftle_map_png};
+use crate::pictures::{check_whole_png, ftle_map_png};
 use crate::stdout::print;
 
 /// The arguments of `spinball ftle-map`.
@@ -157,12 +157,7 @@ pub fn ftle_map(args: &FtleMapArgs) -> Result<(), CliError> {
     let shard_path = args.out.shard_path(shard)?;
     args.out.check()?;
     if let Some(path) = &args.png {
-        if shard.count > 1 {
-            return Err(CliError::Usage(
-                "--png draws a whole map: a shard holds only some of its cells".into(),
-            ));
-        }
-        check_png(path)?;
+        check_whole_png(path, shard, "map: a shard holds only some of its cells")?;
     }
     let slice = match args.q {
         Some(q) => Slice::Q(q),

@@ -22,7 +22,7 @@ use crate::estimator_args::{
 };
 use crate::files::{check_writable, remove_regular};
 use crate::output::OutputArgs;
-use crate::pictures::{check_png, lyapunov_png};
+use crate::pictures::{check_whole_png, lyapunov_png};
 use crate::run_args::RunArgs;
 use crate::stdout::print;
 use crate::watch::{
@@ -313,13 +313,11 @@ pub fn lyapunov(args: &LyapunovArgs) -> Result<(), CliError> {
         return lyapunov_multilevel(args, &options);
     }
     if let Some(path) = &args.png {
-        if args.run.shard().count > 1 {
-            return Err(CliError::Usage(
-                "--png draws a whole run: a shard has no λ yet (draw after `spinball merge`)"
-                    .into(),
-            ));
-        }
-        check_png(path)?;
+        check_whole_png(
+            path,
+            args.run.shard(),
+            "run: a shard has no λ yet (draw after `spinball merge`)",
+        )?;
     }
     match run_ensembles(&args.run, &args.out, &args.checkpoint)? {
         Outcome::Finished(estimates) => {

@@ -16,7 +16,7 @@ use spinball_geometry::Boundary;
 use crate::error::CliError;
 use crate::output::OutputArgs;
 use crate::phase_args::{PhaseArgs, csv_rows};
-use crate::pictures::{check_png, section_png};
+use crate::pictures::{check_whole_png, section_png};
 use crate::stdout::print;
 
 /// How the orbits start.
@@ -145,12 +145,11 @@ pub fn section(args: &SectionArgs) -> Result<(), CliError> {
     let shard_path = args.out.shard_path(shard)?;
     args.out.check()?;
     if let Some(path) = &args.png {
-        if shard.count > 1 {
-            return Err(CliError::Usage(
-                "--png draws a whole section: a shard holds only some of its orbits".into(),
-            ));
-        }
-        check_png(path)?;
+        check_whole_png(
+            path,
+            shard,
+            "section: a shard holds only some of its orbits",
+        )?;
     }
     let billiard = Billiard::new(table, law);
     let sampler = match args.sampler {
