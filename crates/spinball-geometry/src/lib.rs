@@ -49,6 +49,7 @@ pub mod line;
 mod loop_check;
 pub mod lorentz;
 mod opening;
+mod open_spec;
 pub mod outline;
 mod positive_part;
 pub mod rectangle;

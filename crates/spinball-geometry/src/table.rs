@@ -212,6 +212,16 @@ pub enum TableSpecError {
     /// A parameter is not written `key=number`.
     #[error("cannot read `{0}` as key=number")]
     BadPair(String),
+    /// A parameter that takes a word got another word.
+    #[error("`{key}={value}` is not a choice of `{key}` (it takes: {allowed})")]
+    BadWord {
+        /// The key.
+        key: &'static str,
+        /// The word given.
+        value: String,
+        /// The words it takes.
+        allowed: &'static str,
+    },
     /// The numbers do not make a valid table.
     #[error(transparent)]
     Geometry(#[from] GeometryError),
