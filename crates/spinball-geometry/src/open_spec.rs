@@ -25,8 +25,6 @@ use crate::table::{Built, Table, TableSpecError};
 
 /// The `key=value` pairs of a spec, keys lower-cased.
 struct Pairs {
-    table: &'static str,
-    allowed: &'static str,
     pairs: Vec<(String, String)>,
 }
 
@@ -47,11 +45,7 @@ impl Pairs {
             }
             pairs.push((k, v.trim().to_string()));
         }
-        Ok(Pairs {
-            table,
-            allowed,
-            pairs,
-        })
+        Ok(Pairs { pairs })
     }
 
     fn word(&self, key: &str) -> Option<&str> {
@@ -69,10 +63,6 @@ impl Pairs {
                 .parse()
                 .map_err(|_| TableSpecError::BadPair(format!("{key}={v}"))),
         }
-    }
-
-    fn has(&self, key: &str) -> bool {
-        self.word(key).is_some()
     }
 }
 

@@ -119,6 +119,44 @@ impl KacPrediction {
         KacPrediction::new(table.perimeter(), table.area(), hole, alpha)
     }
 
+    /// The prediction for an open `table` at `alpha`, its hole the total
+    /// arc length of its hole walls ([`WallKind::Hole`](spinball_geometry::WallKind)):
+    /// `None` for a table without holes, with periodic walls (its
+    /// "perimeter" is not a wall) or without a shape to read the walls
+    /// from.
+    ///
+    /// # Errors
+    /// As [`KacPrediction::new`].
+    pub fn for_open_table<B: Boundary + ?Sized>(
+        table: &B,
+        alpha: f64,
+    ) -> Result<Option<Self>, EscapeError> {
+        let Some(spinball_geometry::Shape::Segments {
+            outer,
+            holes,
+            kinds,
+            ..
+        }) = table.shape()
+        else {
+            return Ok(None);
+        };
+        if kinds.iter().any(|k| k.is_periodic()) {
+            return Ok(None);
+        }
+        let hole: f64 = outer
+            .iter()
+            .chain(holes.iter().flatten())
+            .zip(&kinds)
+            .filter(|(_, k)| k.is_hole())
+            .map(|(w, _)| w.length())
+            .sum();
+        if hole > 0.0 {
+            KacPrediction::for_table(table, hole, alpha).map(Some)
+        } else {
+            Ok(None)
+        }
+    }
+
     /// The predicted mean on `clock`.
     #[must_use]
     pub fn mean(&self, clock: Clock) -> f64 {
@@ -183,6 +221,18 @@ mod tests {
     use super::*;
     use crate::escape::Survival;
     use std::f64::consts::PI;
+
+    #[test]
+    fn an_open_table_gives_its_hole() {
+        let t = spinball_geometry::SegmentTable::stadium_with_hole(1.0, 3.0, 0.2).unwrap();
+        let k = KacPrediction::for_open_table(&t, 0.5).unwrap().unwrap();
+        assert!((k.hole - 0.2).abs() < 1e-12, "{k}");
+        assert_eq!(k, KacPrediction::for_table(&t, k.hole, 0.5).unwrap());
+        let gas = spinball_geometry::LorentzGas::square(1.0, 0.4).unwrap();
+        assert_eq!(KacPrediction::for_open_table(&gas.table().unwrap(), 0.0), Ok(None));
+        let closed = spinball_geometry::Stadium::new(1.0).unwrap();
+        assert_eq!(KacPrediction::for_open_table(&closed, 0.0), Ok(None));
+    }
 
     #[test]
     fn zero_spin_closed_forms() {

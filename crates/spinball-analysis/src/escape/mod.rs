@@ -20,7 +20,10 @@
 //!   `P(t) ∝ t^{−β}` and a stated decision [`TailLaw`] between an
 //!   exponential and an algebraic tail;
 //! - [`KacPrediction`]: the mean escape time the invariant measure predicts
-//!   for a small hole (Kac's lemma), in collisions and in time, for any α.
+//!   for a small hole (Kac's lemma), in collisions and in time, for any α;
+//! - [`EscapeSummary`]: all of the above for the records of a run
+//!   ([`EscapeRecord`](crate::open::EscapeRecord)s), in time and in
+//!   collisions: what the command line, Python and the examples report.
 //!
 //! The definitions, estimators and their errors are in `docs/TRANSPORT.md`.
 //!
@@ -36,11 +39,13 @@
 mod algebraic_tail;
 mod escape_rate;
 mod kac;
+mod summary;
 mod survival;
 
 pub use algebraic_tail::{AlgebraicTail, DECISION_Z, TailLaw, TailWindow};
 pub use escape_rate::{EscapeRate, MIN_EVENTS, RateWindow};
 pub use kac::{KacPrediction, KacRatio};
+pub use summary::{ClockSummary, EscapeOptions, EscapeSummary};
 pub use survival::{Clock, MeanEscape, Survival, SurvivalPoint, Z95};
 
 use thiserror::Error;
@@ -93,6 +98,11 @@ pub enum EscapeError {
         /// Window end.
         t1: f64,
     },
+    /// An escape run on a table without a hole.
+    #[error(
+        "the table has no hole, so no ball can escape: add one (e.g. `stadium:a=1,hole=0.2`, or `exits`/`openings` in a table file)"
+    )]
+    NoHole,
     /// An option out of range.
     #[error("invalid option `{name}`: {reason}")]
     InvalidOption {

@@ -112,12 +112,14 @@
 //! [`Accumulator::merge`] when you cannot keep the samples and a difference in
 //! the last bits does not matter.
 
+mod fitted;
 mod ftle;
 mod lyapunov;
 mod plus_minus;
 mod spectrum;
 mod stats;
 
+pub use fitted::Fitted;
 pub use ftle::{CHAOS_THRESHOLD, ChaoticBand, ChaoticFraction, FtleDistribution, THRESHOLD_BAND};
 pub use lyapunov::{
     HistoryPoint, Lyapunov, LyapunovOptions, Method, PAPER_DELTA0, largest_lyapunov,

@@ -1,6 +1,7 @@
 //! One versioned JSON document for every result a front writes: finished
 //! and partial Lyapunov runs, spectra, sweeps, multilevel runs, stability
-//! diagrams, sections, Kac return times and FTLE maps. Each file says what it is
+//! diagrams, sections, Kac return times, FTLE maps, escape and diffusion
+//! runs. Each file says what it is
 //! (`kind`) and which layout it follows (`schema`), so a reader refuses a
 //! file it cannot read with a message naming both versions instead of a
 //! field error deep inside.
@@ -10,6 +11,8 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+use super::diffusion::{DiffusionDocument, DiffusionPartialDocument};
+use super::escape::{EscapeDocument, EscapePartialDocument};
 use super::figure::FigureDocument;
 use super::lyapunov::LyapunovDocument;
 use super::multilevel::{MultilevelDocument, MultilevelPartialDocument};
@@ -89,6 +92,20 @@ pub enum Document {
     /// One shard of an FTLE map.
     #[serde(rename = "spinball.ftle_map.partial")]
     FtleMapPartial(FtleMapPartialDocument),
+    /// Escape from an open table: per-ball records and their summary
+    /// (`spinball escape`, `merge`).
+    #[serde(rename = "spinball.escape")]
+    Escape(EscapeDocument),
+    /// One shard of an escape run.
+    #[serde(rename = "spinball.escape.partial")]
+    EscapePartial(EscapePartialDocument),
+    /// Diffusion through a periodic table: per-IC displacements and their
+    /// summary (`spinball diffuse`, `merge`).
+    #[serde(rename = "spinball.diffusion")]
+    Diffusion(DiffusionDocument),
+    /// One shard of a diffusion run.
+    #[serde(rename = "spinball.diffusion.partial")]
+    DiffusionPartial(DiffusionPartialDocument),
     /// What a figure example computed (`<stem>.json` of `fig_*`).
     #[serde(rename = "spinball.figure")]
     Figure(FigureDocument),
@@ -174,6 +191,10 @@ impl Document {
             Document::KacPartial(_) => "spinball.kac.partial",
             Document::FtleMap(_) => "spinball.ftle_map",
             Document::FtleMapPartial(_) => "spinball.ftle_map.partial",
+            Document::Escape(_) => "spinball.escape",
+            Document::EscapePartial(_) => "spinball.escape.partial",
+            Document::Diffusion(_) => "spinball.diffusion",
+            Document::DiffusionPartial(_) => "spinball.diffusion.partial",
             Document::Figure(_) => "spinball.figure",
         }
     }

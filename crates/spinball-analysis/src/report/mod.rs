@@ -57,6 +57,10 @@
 //! | `spinball.kac.partial` | [`KacPartialDocument`] | a Kac shard |
 //! | `spinball.ftle_map` | [`FtleMapDocument`] | `ftle-map`, `merge` |
 //! | `spinball.ftle_map.partial` | [`FtleMapPartialDocument`] | an FTLE map shard |
+//! | `spinball.escape` | [`EscapeDocument`] | `escape`, `merge` |
+//! | `spinball.escape.partial` | [`EscapePartialDocument`] | an escape shard |
+//! | `spinball.diffusion` | [`DiffusionDocument`] | `diffuse`, `merge` |
+//! | `spinball.diffusion.partial` | [`DiffusionPartialDocument`] | a diffusion shard |
 //! | `spinball.figure` | [`FigureDocument`] | a figure example's `<stem>.json` |
 //!
 //! [`Document::from_json`] reads the header first: a file of another
@@ -70,7 +74,8 @@
 //!
 //! A sharded or interrupted run is joined in one place:
 //! [`PartialDocument::merge`], [`SpectrumDocument::merge`],
-//! [`SectionPartialDocument::merge`] and [`KacPartialDocument::merge`]
+//! [`SectionPartialDocument::merge`], [`KacPartialDocument::merge`],
+//! [`EscapePartialDocument::merge`] and [`DiffusionPartialDocument::merge`]
 //! (FTLE maps: [`FtleMapPart::merge`](crate::phase_space::FtleMapPart::merge)), after
 //! `same_run` has compared the pieces field by field. Every refusal is a
 //! [`MergeError`](crate::run::MergeError), the error of
@@ -78,13 +83,19 @@
 //! file names.
 
 #[cfg(feature = "serde")]
+mod diffusion;
+#[cfg(feature = "serde")]
 mod document;
+#[cfg(feature = "serde")]
+mod escape;
 #[cfg(feature = "serde")]
 mod figure;
 mod lyapunov;
 #[cfg(feature = "serde")]
 mod multilevel;
 mod names;
+#[cfg(feature = "serde")]
+mod open_run;
 #[cfg(feature = "serde")]
 mod orbits;
 mod partial;
@@ -98,7 +109,11 @@ mod table;
 mod trajectories;
 
 #[cfg(feature = "serde")]
+pub use diffusion::{DIFFUSION_CSV_COLUMNS, DiffusionDocument, DiffusionPartialDocument};
+#[cfg(feature = "serde")]
 pub use document::{Document, DocumentError, SCHEMA, SCHEMA_0_1};
+#[cfg(feature = "serde")]
+pub use escape::{BudgetRecord, ESCAPE_CSV_COLUMNS, EscapeDocument, EscapePartialDocument};
 #[cfg(feature = "serde")]
 pub use figure::FigureDocument;
 pub use lyapunov::LyapunovDocument;
@@ -107,6 +122,8 @@ pub use multilevel::{
     MultilevelDocument, MultilevelPartialDocument, MultilevelPoint, MultilevelShardPoint,
 };
 pub use names::{IcSource, MethodName};
+#[cfg(feature = "serde")]
+pub use open_run::{OpenRun, OpenRunHead};
 #[cfg(feature = "serde")]
 pub use orbits::OrbitsDocument;
 pub use partial::PartialDocument;

@@ -20,19 +20,28 @@
 //!   [`Horizon::Infinite`] (never a finite `D` that is not one);
 //! - [`WindowScan`]: the estimate over successive windows (each twice as
 //!   late as the one before) and its trend in `ln t`, the diagnostic of
-//!   normal against marginal growth.
+//!   normal against marginal growth;
+//! - [`horizon_of`]: the horizon of a periodic table, where it is known
+//!   (refused, never guessed, where it is not);
+//! - [`DiffusionSummary`]: all of the above for the records of a run
+//!   ([`DisplacementRecord`](crate::open::DisplacementRecord)s): what the
+//!   command line, Python and the examples report.
 //!
 //! The definitions, estimators and their errors are in `docs/TRANSPORT.md`.
 
 mod diffusion;
 mod displacements;
 mod horizon;
+mod summary;
+mod table_horizon;
 
 pub use diffusion::{
     Diffusion, DiffusionFit, FitWindow, MIN_POINTS, Trend, WindowScan, diffusion, window_scan,
 };
 pub use displacements::{Displacements, MeanSquareDisplacement, MsdPoint};
 pub use horizon::Horizon;
+pub use summary::DiffusionSummary;
+pub use table_horizon::horizon_of;
 
 use thiserror::Error;
 
@@ -85,6 +94,16 @@ pub enum TransportError {
         /// Window end.
         t1: f64,
     },
+    /// Diffusion asked of a table without periodic walls.
+    #[error(
+        "the table has no periodic walls, so a ball cannot spread: use a periodic table (e.g. `lorentz:lattice=triangular,w=1,R=0.45`, or `periodic` pairs in a table file)"
+    )]
+    NotPeriodic,
+    /// A periodic table whose horizon is not known.
+    #[error(
+        "the horizon of this periodic table is not known (it is known for the Lorentz gases, `lorentz:lattice=…,w=…,R=…`): without it no diffusion coefficient is reported"
+    )]
+    UnknownHorizon,
     /// A window that is not a finite interval.
     #[error("fit window [{t0}, {t1}] is not a finite interval with 0 <= t0 < t1")]
     BadWindow {
