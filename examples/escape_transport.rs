@@ -14,11 +14,10 @@
 use std::f64::consts::PI;
 use std::process::ExitCode;
 
-use spinball::analysis::escape::{
-    AlgebraicTail, EscapeRate, KacPrediction, RateWindow, Survival, TailWindow,
-};
+use spinball::analysis::escape::{EscapeOptions, EscapeSummary, KacPrediction};
+use spinball::analysis::estimators::Fitted;
 use spinball::analysis::open::{Budget, OpenEnsemble};
-use spinball::analysis::transport::{Displacements, diffusion, window_scan};
+use spinball::analysis::transport::DiffusionSummary;
 use spinball::geometry::LorentzGas;
 use spinball::prelude::*;
 use spinball_figures::run_figure;
@@ -38,30 +37,35 @@ fn main() -> ExitCode {
         );
         for alpha in alphas {
             let table = SegmentTable::stadium_with_hole(1.0, 2.0 + PI / 2.0, h)?;
-            let kac = KacPrediction::for_table(&table, h, alpha)?;
+            let kac = KacPrediction::for_open_table(&table, alpha)?;
             let records = OpenEnsemble::new(Billiard::new(table, SpinLaw::new(alpha)?))
                 .with_seed(args.seed)
                 .with_indices(0..balls)
                 .with_threads(threads)
                 .escape_times(budget)?;
-            let times: Vec<f64> = records.iter().map(|r| r.time).collect();
-            let censored: Vec<bool> = records.iter().map(|r| r.censored).collect();
-            let survival = Survival::kaplan_meier(&times, &censored)?;
-            let rate = EscapeRate::fit(&times, &censored, RateWindow::default())?;
-            let tail = AlgebraicTail::fit(&times, &censored, TailWindow::default())?;
-            let mean = kac.compare(survival.mean_escape());
-            println!("  α = {alpha}: {rate}");
+            // The summary the command line and Python report: P(t), the
+            // rate on the default window, the tail, the mean against Kac.
+            let summary = EscapeSummary::new(&records, kac, EscapeOptions::default())?;
+            let Fitted::Fit(time) = &summary.time else {
+                println!("  α = {alpha}: {summary}");
+                continue;
+            };
+            println!("  α = {alpha}: {}", time.rate);
             // With balls still inside at the budget the mean is the
             // restricted mean over [0, last time]: a lower bound.
+            let Some(mean) = time.kac else {
+                continue;
+            };
             let bound = if mean.measured.complete { "" } else { "≥ " };
             println!(
-                "    mean escape time {bound}{:.2} ± {:.2} ({} censored), Kac {:.2}, ratio {bound}{:.3} ± {:.3}; tail: {tail}",
+                "    mean escape time {bound}{:.2} ± {:.2} ({} censored), Kac {:.2}, ratio {bound}{:.3} ± {:.3}; tail: {}",
                 mean.measured.mean,
                 mean.measured.sem,
-                survival.censored(),
+                summary.censored,
                 mean.predicted,
                 mean.ratio,
-                mean.ratio_sem
+                mean.ratio_sem,
+                time.tail
             );
         }
         let gas = LorentzGas::triangular(1.0, 0.45)?;
@@ -78,17 +82,16 @@ fn main() -> ExitCode {
                 .with_indices(0..ics)
                 .with_threads(threads)
                 .displacements(&times)?;
-            let dr: Vec<[f64; 2]> = records
-                .iter()
-                .flat_map(|r| r.displacement.iter().map(|d| [d.x, d.y]))
-                .collect();
-            let d = Displacements::new(&times, &dr)?;
-            let estimate = diffusion(&d, horizon.into(), None)?;
-            let scan = window_scan(&d, horizon.into())?;
-            let trend = scan
-                .trend
+            let summary = DiffusionSummary::new(&times, &records, horizon.into(), None)?;
+            let trend = summary
+                .scan
+                .fit()
+                .and_then(|s| s.trend)
                 .map_or("none".to_string(), |t| format!("{:.2} SE", t.z()));
-            println!("  α = {alpha}: {estimate} (trend over windows {trend})");
+            println!(
+                "  α = {alpha}: {} (trend over windows {trend})",
+                summary.estimate
+            );
         }
         Ok(())
     })

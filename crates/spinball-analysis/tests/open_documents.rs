@@ -194,8 +194,13 @@ fn tables_that_cannot_run_are_refused_with_typed_errors() {
     assert_eq!(err, AnalysisError::Escape(EscapeError::NoHole));
     assert!(err.to_string().contains("add one"), "{err}");
     let times = [1.0, 2.0, 3.0];
-    let err = DiffusionDocument::run(&open_run("stadium:a=1", 0.4, 10, 1), &times, None, &mut quiet())
-        .unwrap_err();
+    let err = DiffusionDocument::run(
+        &open_run("stadium:a=1", 0.4, 10, 1),
+        &times,
+        None,
+        &mut quiet(),
+    )
+    .unwrap_err();
     assert_eq!(err, AnalysisError::Transport(TransportError::NotPeriodic));
     // A hole in a periodic table: the horizon is not known.
     let gas: Built = "lorentz:lattice=square,w=1,R=0.4".parse().unwrap();
@@ -214,7 +219,10 @@ fn tables_that_cannot_run_are_refused_with_typed_errors() {
         .unwrap()
     };
     let e = EscapePartialDocument::merge(vec![part(1), part(2)]).unwrap_err();
-    assert!(matches!(e, MergeError::DifferentRuns { what: "seed", .. }), "{e}");
+    assert!(
+        matches!(e, MergeError::DifferentRuns { what: "seed", .. }),
+        "{e}"
+    );
     let e = EscapePartialDocument::merge(vec![part(1)]).unwrap_err();
     assert!(matches!(e, MergeError::Missing { .. }), "{e}");
 }

@@ -4,7 +4,7 @@
 //! their distribution (`ftle`), the full spectrum (`spectrum`), single
 //! trajectories (`trajectory`), films of them (`animate`), tables (`table`), periodic orbits and
 //! their stability (`orbits`), phase space (`section`, `ftle-map`, `kac`),
-//! and campaigns on a
+//! open and periodic tables (`escape`, `diffuse`), and campaigns on a
 //! cluster: every ensemble command runs one shard with `--shard K/N`,
 //! `merge` combines the shards into the unsharded result bitwise, `slurm`
 //! writes the job array. Tables are built-in specs or table files (TOML or
@@ -20,6 +20,7 @@ mod documents;
 mod error;
 mod estimator_args;
 mod files;
+mod open_args;
 mod output;
 mod phase_args;
 mod pictures;
@@ -37,6 +38,8 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 use crate::commands::animate::{AnimateArgs, animate};
+use crate::commands::diffuse::{DiffuseArgs, diffuse};
+use crate::commands::escape::{EscapeArgs, escape};
 use crate::commands::ftle::{FtleArgs, ftle};
 use crate::commands::ftle_map::{FtleMapArgs, ftle_map};
 use crate::commands::kac::{KacArgs, kac};
@@ -110,6 +113,12 @@ enum Command {
     /// Mean return times to a region of the section against Kac's lemma,
     /// orbits started from the invariant measure.
     Kac(Box<KacArgs>),
+    /// Escape from a table with a hole: per-ball escape times (censored at
+    /// a budget), survival P(t), escape rate, tail and Kac; shards merge.
+    Escape(Box<EscapeArgs>),
+    /// Diffusion through a periodic table (a Lorentz gas): mean-square
+    /// displacement and the diffusion coefficient; shards merge.
+    Diffuse(Box<DiffuseArgs>),
 }
 
 /// `n` as the `'static` text clap takes for a default value computed from
@@ -137,6 +146,8 @@ fn main() -> ExitCode {
         Command::Section(a) => section(a),
         Command::FtleMap(a) => ftle_map(a),
         Command::Kac(a) => kac(a),
+        Command::Escape(a) => escape(a),
+        Command::Diffuse(a) => diffuse(a),
     };
     match result {
         Ok(()) | Err(CliError::StdoutClosed) => ExitCode::SUCCESS,

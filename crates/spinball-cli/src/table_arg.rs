@@ -2,13 +2,14 @@
 
 use std::path::Path;
 
-use spinball_geometry::{Built, Table, TableFile};
+use spinball_geometry::{Built, TableFile};
 
 use crate::error::CliError;
 
 /// Read `arg`: a path ending in `.toml` or `.json` is a table file, anything
 /// else a built-in spec (`stadium:a=1`, `sinai:L=2,R=1`, `circle`,
-/// `rectangle:L=1,H=1`).
+/// `rectangle:L=1,H=1`; with a hole `stadium:a=1,hole=0.2`; a Lorentz gas's
+/// cell `lorentz:lattice=triangular,w=1,R=0.45`).
 ///
 /// # Errors
 /// [`CliError::Usage`] with the parser's or the table's message.
@@ -19,7 +20,7 @@ pub fn read_table(arg: &str) -> Result<Built, CliError> {
     if is_file {
         TableFile::load(arg).map_err(CliError::usage)
     } else {
-        arg.parse::<Table>().map(Built::Table).map_err(|e| {
+        arg.parse::<Built>().map_err(|e| {
             CliError::Usage(format!(
                 "--table {arg}: {e} (or give a .toml/.json table file)"
             ))

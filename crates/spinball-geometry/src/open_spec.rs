@@ -29,7 +29,11 @@ struct Pairs {
 }
 
 impl Pairs {
-    fn new(table: &'static str, allowed: &'static str, params: &str) -> Result<Self, TableSpecError> {
+    fn new(
+        table: &'static str,
+        allowed: &'static str,
+        params: &str,
+    ) -> Result<Self, TableSpecError> {
         let mut pairs = Vec::new();
         for pair in params.split(',').map(str::trim).filter(|p| !p.is_empty()) {
             let (k, v) = pair

@@ -197,7 +197,7 @@ impl Boundary for Table {
 #[non_exhaustive]
 pub enum TableSpecError {
     /// The name before `:` is not a built-in table.
-    #[error("unknown table `{0}` (expected circle, rectangle, stadium or sinai)")]
+    #[error("unknown table `{0}` (expected circle, rectangle, stadium, sinai or lorentz)")]
     UnknownTable(String),
     /// A `key=value` pair names a parameter the table does not have.
     #[error("table `{table}` has no parameter `{key}` (it takes: {allowed})")]

@@ -229,7 +229,10 @@ mod tests {
         assert!((k.hole - 0.2).abs() < 1e-12, "{k}");
         assert_eq!(k, KacPrediction::for_table(&t, k.hole, 0.5).unwrap());
         let gas = spinball_geometry::LorentzGas::square(1.0, 0.4).unwrap();
-        assert_eq!(KacPrediction::for_open_table(&gas.table().unwrap(), 0.0), Ok(None));
+        assert_eq!(
+            KacPrediction::for_open_table(&gas.table().unwrap(), 0.0),
+            Ok(None)
+        );
         let closed = spinball_geometry::Stadium::new(1.0).unwrap();
         assert_eq!(KacPrediction::for_open_table(&closed, 0.0), Ok(None));
     }

@@ -9,8 +9,8 @@
 use std::fmt;
 
 use super::{
-    AlgebraicTail, Clock, EscapeError, EscapeRate, KacPrediction, KacRatio, MeanEscape,
-    RateWindow, Survival, TailWindow, Z95,
+    AlgebraicTail, Clock, EscapeError, EscapeRate, KacPrediction, KacRatio, MeanEscape, RateWindow,
+    Survival, TailWindow, Z95,
 };
 use crate::estimators::{Fitted, PlusMinus};
 use crate::open::EscapeRecord;
@@ -297,7 +297,9 @@ mod tests {
         assert!(s.collisions.refused().is_some());
         // Three escapes: a curve, but too few balls for the default window
         // (20 at risk at its end).
-        let few: Vec<EscapeRecord> = (0..3).map(|i| record(i, 1.0 + i as f64, 2, false)).collect();
+        let few: Vec<EscapeRecord> = (0..3)
+            .map(|i| record(i, 1.0 + i as f64, 2, false))
+            .collect();
         let s = EscapeSummary::new(&few, None, EscapeOptions::default()).unwrap();
         let t = s.time.fit().unwrap();
         let why = t.rate.refused().unwrap();

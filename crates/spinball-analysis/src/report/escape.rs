@@ -158,8 +158,8 @@ impl EscapePartialDocument {
             .iter()
             .flat_map(|&k| parts[k].records.iter().copied())
             .collect();
-        let summary = EscapeSummary::new(&records, first.kac, first.options)
-            .map_err(AnalysisError::from)?;
+        let summary =
+            EscapeSummary::new(&records, first.kac, first.options).map_err(AnalysisError::from)?;
         Ok(EscapeDocument {
             head: first.head.clone(),
             budget: first.budget,

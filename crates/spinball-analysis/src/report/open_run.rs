@@ -89,7 +89,10 @@ pub(super) fn differ(fields: &[(&'static str, String, String)]) -> Result<(), Me
 ///
 /// # Errors
 /// [`MergeError`] for blocks that overlap or leave initial conditions out.
-pub(super) fn in_order(blocks: &[Range<u64>], total: &Range<u64>) -> Result<Vec<usize>, MergeError> {
+pub(super) fn in_order(
+    blocks: &[Range<u64>],
+    total: &Range<u64>,
+) -> Result<Vec<usize>, MergeError> {
     tile(blocks, total)
 }
 

@@ -101,3 +101,32 @@ impl FtleMapDefaults {
     /// Collisions per start.
     pub const COLLISIONS: u64 = 2_000;
 }
+
+/// The defaults of an escape run (`spinball escape`, Python `escape`):
+/// starts from [`RunDefaults::SAMPLER`] and [`RunDefaults::SEED`], the
+/// summary's windows as
+/// [`EscapeOptions::default`](crate::escape::EscapeOptions).
+#[derive(Debug, Clone, Copy)]
+pub enum EscapeDefaults {}
+
+impl EscapeDefaults {
+    /// Balls (indices `0..1000`).
+    pub const ICS: u64 = 1_000;
+    /// Collisions before a ball still inside counts as censored.
+    pub const COLLISIONS: u64 = 100_000;
+}
+
+/// The defaults of a diffusion run (`spinball diffuse`, Python `diffuse`):
+/// starts from [`RunDefaults::SAMPLER`] and [`RunDefaults::SEED`], the fit
+/// window the later half of the run.
+#[derive(Debug, Clone, Copy)]
+pub enum DiffusionDefaults {}
+
+impl DiffusionDefaults {
+    /// Initial conditions (indices `0..1000`).
+    pub const ICS: u64 = 1_000;
+    /// The last checkpoint time.
+    pub const UNTIL: f64 = 1_000.0;
+    /// Checkpoints, evenly spaced up to [`DiffusionDefaults::UNTIL`].
+    pub const CHECKPOINTS: u32 = 20;
+}

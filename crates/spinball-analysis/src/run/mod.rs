@@ -26,8 +26,8 @@
 //! One set of defaults for every front: [`RunDefaults`] (an ensemble run:
 //! seed 0, 1000 initial conditions of 10⁴ collisions, the paper's sampler
 //! and finite-difference method, threshold 0.01, lanes, all threads),
-//! [`SpectrumDefaults`], [`SectionDefaults`], [`KacDefaults`] and
-//! [`FtleMapDefaults`]. [`Ensemble::new`], `Method::default` and
+//! [`SpectrumDefaults`], [`SectionDefaults`], [`KacDefaults`],
+//! [`FtleMapDefaults`], [`EscapeDefaults`] and [`DiffusionDefaults`]. [`Ensemble::new`], `Method::default` and
 //! `FtleMapOptions::new` read them; the command line's option defaults and
 //! the Python keyword defaults are these constants too (the CLI reads them,
 //! the Python package checks its literals against them when it is
@@ -277,7 +277,10 @@ mod trajectory;
 
 pub use alpha_sweep::{AlphaSweep, SweepEvent, linspace};
 pub use checksum::IntegrityError;
-pub use defaults::{FtleMapDefaults, KacDefaults, RunDefaults, SectionDefaults, SpectrumDefaults};
+pub use defaults::{
+    DiffusionDefaults, EscapeDefaults, FtleMapDefaults, KacDefaults, RunDefaults, SectionDefaults,
+    SpectrumDefaults,
+};
 pub use driver::{BatchProgress, Control, RunEvent, RunObserver, Silent};
 pub use engine::Engine;
 pub use ensemble::Ensemble;

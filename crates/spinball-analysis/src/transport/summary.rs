@@ -129,12 +129,20 @@ mod tests {
         for horizon in [Horizon::Finite, Horizon::Infinite] {
             let s = DiffusionSummary::new(&times, &records, horizon, None).unwrap();
             assert_eq!(s.msd, MeanSquareDisplacement::new(&d));
-            assert_eq!(s.estimate, Fitted::Fit(diffusion(&d, horizon, None).unwrap()));
+            assert_eq!(
+                s.estimate,
+                Fitted::Fit(diffusion(&d, horizon, None).unwrap())
+            );
             assert_eq!(s.scan, Fitted::Fit(window_scan(&d, horizon).unwrap()));
         }
         let narrow = FitWindow::new(11.5, 12.0).unwrap();
         let s = DiffusionSummary::new(&times, &records, Horizon::Finite, Some(narrow)).unwrap();
-        assert!(s.estimate.refused().unwrap().contains("checkpoints in the fit window"));
+        assert!(
+            s.estimate
+                .refused()
+                .unwrap()
+                .contains("checkpoints in the fit window")
+        );
         assert!(s.to_string().contains("finite horizon"), "{s}");
     }
 }

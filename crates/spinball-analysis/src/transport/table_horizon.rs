@@ -15,7 +15,10 @@ use super::{Horizon, TransportError};
 /// The Lorentz gas whose cell `table` is, if it is one.
 fn lorentz_cell<B: Boundary + ?Sized>(table: &B) -> Option<LorentzGas> {
     let shape = table.shape()?;
-    let spinball_geometry::Shape::Segments { name: Some(name), .. } = &shape else {
+    let spinball_geometry::Shape::Segments {
+        name: Some(name), ..
+    } = &shape
+    else {
         return None;
     };
     let (lattice, rest) = name.split_once(" Lorentz gas ")?;

@@ -2,18 +2,21 @@
 //! unsharded run gives, bitwise. The comparison and the joining are the
 //! library's (`PartialDocument::merge`, `SpectrumDocument::merge`,
 //! `FtleMapPart::merge`, `SectionPartialDocument::merge`,
-//! `KacPartialDocument::merge`); this
+//! `KacPartialDocument::merge`, `EscapePartialDocument::merge`,
+//! `DiffusionPartialDocument::merge`); this
 //! command reads the files and names them in every refusal.
 
 use std::path::{Path, PathBuf};
 
 use clap::Args;
 use spinball_analysis::report::{
-    Document, KacPartialDocument, MultilevelPartialDocument, PartialDocument,
-    SectionPartialDocument, SpectrumDocument,
+    DiffusionPartialDocument, Document, EscapePartialDocument, KacPartialDocument,
+    MultilevelPartialDocument, PartialDocument, SectionPartialDocument, SpectrumDocument,
 };
 use spinball_analysis::run::MergeError;
 
+use crate::commands::diffuse::write_diffusion;
+use crate::commands::escape::write_escape;
 use crate::commands::ftle_map::merge_maps;
 use crate::commands::kac::write_kac;
 use crate::commands::section::write_section;
@@ -28,7 +31,8 @@ use crate::stdout::print;
 #[derive(Debug, Clone, Args)]
 pub struct MergeArgs {
     /// The partial results (the --json files of every shard of a
-    /// `lyapunov`, `ftle`, `spectrum`, `ftle-map`, `section` or `kac` run,
+    /// `lyapunov`, `ftle`, `spectrum`, `ftle-map`, `section`, `kac`,
+    /// `escape` or `diffuse` run,
     /// or of a multilevel campaign), in any order.
     #[arg(required = true)]
     pub parts: Vec<PathBuf>,
@@ -176,6 +180,22 @@ pub fn merge(args: &MergeArgs) -> Result<(), CliError> {
             })?;
             let doc = KacPartialDocument::merge(parts).map_err(|e| refused(args, &e))?;
             write_kac(&doc, &args.out)
+        }
+        Document::EscapePartial(first) => {
+            let parts = gather(args, first, |d| match d {
+                Document::EscapePartial(p) => Ok(p),
+                other => Err(other.kind()),
+            })?;
+            let doc = EscapePartialDocument::merge(parts).map_err(|e| refused(args, &e))?;
+            write_escape(&doc, &args.out)
+        }
+        Document::DiffusionPartial(first) => {
+            let parts = gather(args, first, |d| match d {
+                Document::DiffusionPartial(p) => Ok(p),
+                other => Err(other.kind()),
+            })?;
+            let doc = DiffusionPartialDocument::merge(parts).map_err(|e| refused(args, &e))?;
+            write_diffusion(&doc, &args.out)
         }
         other => Err(CliError::Usage(format!(
             "{} is not a partial result (its kind is `{}`); merge the --json files of sharded runs",

@@ -2,6 +2,8 @@
 //! arguments and calls the library.
 
 pub mod animate;
+pub mod diffuse;
+pub mod escape;
 pub mod ftle;
 pub mod ftle_map;
 pub mod kac;
