@@ -28,6 +28,7 @@ pub mod billiard;
 pub mod errors;
 pub mod ftle;
 pub mod multilevel;
+pub mod open_tables;
 pub mod orbits;
 pub mod phase_space;
 pub mod results;
@@ -74,5 +75,6 @@ fn _spinball(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(orbits::island_sizes, m)?)?;
     m.add_function(wrap_pyfunction!(animation::animate, m)?)?;
     phase_space::register(m)?;
+    open_tables::register(m)?;
     Ok(())
 }

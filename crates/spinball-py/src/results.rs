@@ -25,7 +25,7 @@ pub fn plus_minus(value: f64, error: f64) -> String {
 }
 
 /// `value` as its serde JSON text (`indent` spaces, or compact).
-fn json<T: serde::Serialize>(value: &T, indent: Option<usize>) -> PyResult<String> {
+pub(crate) fn json<T: serde::Serialize>(value: &T, indent: Option<usize>) -> PyResult<String> {
     let out = match indent {
         None => serde_json::to_string(value),
         Some(n) => {
@@ -42,7 +42,7 @@ fn json<T: serde::Serialize>(value: &T, indent: Option<usize>) -> PyResult<Strin
 }
 
 /// JSON text to Python objects (`json.loads`).
-fn loads<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyAny>> {
+pub(crate) fn loads<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyAny>> {
     py.import("json")?.call_method1("loads", (text,))
 }
 

@@ -41,6 +41,24 @@ macro_rules! with_table {
     };
 }
 
+impl From<Built> for AnyTable {
+    fn from(b: Built) -> Self {
+        match b {
+            Built::Table(t) => AnyTable::Builtin(t),
+            Built::Segments(t) => AnyTable::Segments(t),
+        }
+    }
+}
+
+impl From<AnyTable> for Built {
+    fn from(t: AnyTable) -> Self {
+        match t {
+            AnyTable::Builtin(t) => Built::Table(t),
+            AnyTable::Segments(t) => Built::Segments(t),
+        }
+    }
+}
+
 impl AnyTable {
     /// The spec string (`stadium:a=1`, `segments(6 walls)`).
     #[must_use]
@@ -78,8 +96,8 @@ pub fn table_arg(obj: &Bound<'_, PyAny>) -> PyResult<AnyTable> {
     if let Ok(s) = obj.cast::<PyString>() {
         let spec: String = s.extract()?;
         return spec
-            .parse::<Table>()
-            .map(AnyTable::Builtin)
+            .parse::<Built>()
+            .map(AnyTable::from)
             .map_err(|e| value_error(format!("table spec `{spec}`: {e}")));
     }
     Err(PyTypeError::new_err(format!(
@@ -394,14 +412,20 @@ impl PySinai {
 
 /// The built-in table a spec string names: `circle`, `circle:R=1`,
 /// `rectangle:L=1,H=1`, `stadium:a=1`, `sinai:L=2,R=1` (missing keys take
-/// the paper's values). Raises `ValueError` for an unknown table or key, or
-/// invalid numbers.
+/// the paper's values); with a hole, `stadium:a=1,hole=0.2` (centred on the
+/// right cap, `at=S` moves it), `sinai:L=2,R=1,hole=0.2`,
+/// `circle:R=1,hole=0.3` (a `SegmentTable`); a Lorentz gas's cell,
+/// `lorentz:lattice=triangular,w=1,R=0.45`. Raises `ValueError` for an
+/// unknown table or key, or invalid numbers.
 #[pyfunction]
 pub fn table(py: Python<'_>, spec: &str) -> PyResult<Py<PyAny>> {
-    let t: Table = spec
+    let t: Built = spec
         .parse()
         .map_err(|e| value_error(format!("table spec `{spec}`: {e}")))?;
-    builtin_object(py, t)
+    match t {
+        Built::Table(t) => builtin_object(py, t),
+        Built::Segments(t) => Ok(Py::new(py, segment_table(t))?.into_any()),
+    }
 }
 
 /// The Python object of a built-in table.
@@ -559,7 +583,7 @@ fn segment_object(py: Python<'_>, s: &Segment) -> PyResult<Py<PyAny>> {
     })
 }
 
-fn segment_table(t: SegmentTable) -> PyClassInitializer<PySegmentTable> {
+pub(crate) fn segment_table(t: SegmentTable) -> PyClassInitializer<PySegmentTable> {
     PyClassInitializer::from(PyTable {
         inner: AnyTable::Segments(t.clone()),
     })
@@ -609,6 +633,87 @@ impl PySegmentTable {
             .collect();
         let t = SegmentTable::polygon(&v).map_err(geometry)?;
         Py::new(py, segment_table(t))
+    }
+    /// The same table with wall `wall` (its index: outer walls first, then
+    /// the holes' in order) made a hole: a ball reaching it leaves. Raises
+    /// `ValueError` for a wall that does not exist or is already a hole or
+    /// periodic.
+    fn with_hole(&self, py: Python<'_>, wall: u32) -> PyResult<Py<PySegmentTable>> {
+        let t = self.inner.clone().with_hole(wall).map_err(geometry)?;
+        Py::new(py, segment_table(t))
+    }
+    /// The same table with walls `a` and `b` periodic partners (two
+    /// parallel straight walls of equal length, translates of each other):
+    /// a ball leaving through one re-enters through the other, one cell
+    /// further on. Raises `ValueError` otherwise.
+    fn with_periodic(&self, py: Python<'_>, a: u32, b: u32) -> PyResult<Py<PySegmentTable>> {
+        let t = self.inner.clone().with_periodic(a, b).map_err(geometry)?;
+        Py::new(py, segment_table(t))
+    }
+    /// The same table with a hole of arc length `size` centred at Birkhoff
+    /// coordinate `s` (the stretch must lie within one wall, which is split
+    /// there). Raises `ValueError` otherwise.
+    fn with_hole_at(&self, py: Python<'_>, s: f64, size: f64) -> PyResult<Py<PySegmentTable>> {
+        let t = self.inner.with_hole_at(s, size).map_err(geometry)?;
+        Py::new(py, segment_table(t))
+    }
+    /// The stadium of flat half-length `a` with a hole of arc length `size`
+    /// centred at Birkhoff `s` (the `Stadium`'s parametrisation; the right
+    /// cap's middle is `s = 2a + π/2`).
+    #[staticmethod]
+    fn stadium_with_hole(
+        py: Python<'_>,
+        a: f64,
+        s: f64,
+        size: f64,
+    ) -> PyResult<Py<PySegmentTable>> {
+        let t = SegmentTable::stadium_with_hole(a, s, size).map_err(geometry)?;
+        Py::new(py, segment_table(t))
+    }
+    /// The Sinai table (`L`, `R`) with a hole of arc length `size` centred
+    /// at Birkhoff `s`.
+    #[staticmethod]
+    #[allow(non_snake_case)]
+    fn sinai_with_hole(
+        py: Python<'_>,
+        L: f64,
+        R: f64,
+        s: f64,
+        size: f64,
+    ) -> PyResult<Py<PySegmentTable>> {
+        let t = SegmentTable::sinai_with_hole(L, R, s, size).map_err(geometry)?;
+        Py::new(py, segment_table(t))
+    }
+    /// The circle of radius `R` with a hole of arc length `size` centred at
+    /// polar angle `angle`.
+    #[staticmethod]
+    #[allow(non_snake_case)]
+    fn circle_with_hole(
+        py: Python<'_>,
+        R: f64,
+        angle: f64,
+        size: f64,
+    ) -> PyResult<Py<PySegmentTable>> {
+        let t = SegmentTable::circle_with_hole(R, angle, size).map_err(geometry)?;
+        Py::new(py, segment_table(t))
+    }
+    /// What each wall does, in wall order: `"reflecting"`, `"hole"` or
+    /// `"periodic"`.
+    #[getter]
+    fn kinds(&self) -> Vec<&'static str> {
+        self.inner
+            .kinds()
+            .iter()
+            .map(|k| {
+                if k.is_hole() {
+                    "hole"
+                } else if k.is_periodic() {
+                    "periodic"
+                } else {
+                    "reflecting"
+                }
+            })
+            .collect()
     }
     /// The outer walls, as `Line` / `Arc` objects.
     #[getter]
