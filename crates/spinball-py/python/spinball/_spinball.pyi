@@ -103,6 +103,43 @@ class SegmentTable(Table):
     def outer(self) -> List[Union[Line, Arc]]: ...
     @property
     def holes(self) -> List[List[Union[Line, Arc]]]: ...
+    @property
+    def kinds(self) -> List[str]:
+        """What each wall does: ``"reflecting"``, ``"hole"`` or ``"periodic"``."""
+    def with_hole(self, wall: int) -> "SegmentTable":
+        """The same table with wall ``wall`` a hole (a ball reaching it leaves)."""
+    def with_periodic(self, a: int, b: int) -> "SegmentTable":
+        """The same table with walls ``a`` and ``b`` periodic partners."""
+    def with_hole_at(self, s: float, size: float) -> "SegmentTable":
+        """The same table with a hole of arc length ``size`` centred at Birkhoff ``s``."""
+    @staticmethod
+    def stadium_with_hole(a: float, s: float, size: float) -> "SegmentTable":
+        """The stadium with a hole of arc length ``size`` centred at Birkhoff ``s``
+        (the right cap's middle is ``2a + π/2``)."""
+    @staticmethod
+    def sinai_with_hole(L: float, R: float, s: float, size: float) -> "SegmentTable": ...
+    @staticmethod
+    def circle_with_hole(R: float, angle: float, size: float) -> "SegmentTable": ...
+
+class LorentzGas:
+    """Disks of radius ``R`` on a ``"square"`` or ``"triangular"`` lattice of
+    spacing ``w``, run as one cell with periodic sides."""
+
+    def __init__(self, lattice: str = "triangular", w: float = 1.0, R: float = 0.4) -> None: ...
+    def table(self) -> SegmentTable:
+        """The unit cell, its sides periodic partners."""
+    @property
+    def horizon(self) -> str:
+        """``"finite"`` or ``"infinite"`` (corridors: no finite diffusion coefficient)."""
+    @property
+    def lattice(self) -> str: ...
+    @property
+    def w(self) -> float: ...
+    @property
+    def R(self) -> float: ...
+    @property
+    def spec(self) -> str:
+        """``lorentz:lattice=…,w=…,R=…``, which ``table()`` and ``--table`` read."""
 
 def plus_minus(value: float, error: float) -> str:
     """``value ± error``, the error to two significant digits and the value to
@@ -542,3 +579,111 @@ def animate(
     >>> film["positions"].shape
     (2, 40, 2)
     """
+
+class EscapeResult:
+    """The result of ``escape``: every ball's record and the summary, in time
+    and in collisions (``clock="time"`` or ``"collisions"``, the hole counted)."""
+
+    @property
+    def index(self) -> npt.NDArray[np.uint64]: ...
+    @property
+    def times(self) -> npt.NDArray[np.float64]:
+        """Escape times (for a censored ball, the time it was last seen inside)."""
+    @property
+    def collisions(self) -> npt.NDArray[np.uint64]:
+        """Collisions before the hole (or before the budget ran out)."""
+    @property
+    def censored(self) -> npt.NDArray[np.bool_]:
+        """Whether each ball was still inside at the budget."""
+    @property
+    def exit_point(self) -> npt.NDArray[np.float64]:
+        """``(n, 2)`` exit points (NaN for a censored ball)."""
+    @property
+    def exit_s(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def exit_v_par(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def exit_spin(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def escaped(self) -> int: ...
+    @property
+    def n_censored(self) -> int: ...
+    def survival(self, clock: str = "time") -> Optional[Dict[str, npt.NDArray[np.float64]]]:
+        """Kaplan–Meier ``P``: arrays ``t``, ``p``, ``sem``, ``lower``, ``upper`` (95 %
+        log–log band), ``at_risk``; ``None`` if no ball escaped."""
+    def escape_rate(self, clock: str = "time") -> Optional[Tuple[float, float]]:
+        """``(γ, SEM)`` on the rate window; ``None`` if refused (see ``summary``)."""
+    def mean_escape(self, clock: str = "time") -> Optional[Tuple[float, float, bool]]:
+        """``(mean, SEM, complete)``: a lower bound when balls were censored."""
+    def kac_ratio(self, clock: str = "time") -> Optional[Tuple[float, float]]:
+        """Mean escape time over Kac's prediction ``(ratio, SEM)``."""
+    def tail(self, clock: str = "time") -> Optional[Tuple[str, float, float]]:
+        """``(law, β, SEM)``, law ``"algebraic"``, ``"exponential"`` or ``"undecided"``."""
+    @property
+    def summary(self) -> Dict[str, Any]:
+        """The whole summary (a refused estimate is ``{"refused": reason}``)."""
+    def to_json(self, indent: Optional[int] = None) -> str:
+        """The ``spinball.escape`` document ``spinball escape --json`` writes."""
+
+class DiffusionResult:
+    """The result of ``diffuse``."""
+
+    @property
+    def times(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def displacements(self) -> npt.NDArray[np.float64]:
+        """``(ICs, checkpoints, 2)`` unwrapped displacements."""
+    @property
+    def msd(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def msd_sem(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def horizon(self) -> str: ...
+    @property
+    def diffusion_coefficient(self) -> Optional[Tuple[float, float]]:
+        """``(D, SEM)`` for a finite horizon; ``None`` for an infinite one."""
+    @property
+    def marginal_coefficient(self) -> Optional[Tuple[float, float]]:
+        """``(D_m, SEM)`` of ``⟨Δr²⟩ ≈ 4 D_m t ln t`` for an infinite horizon."""
+    @property
+    def window(self) -> Optional[Tuple[float, float]]: ...
+    @property
+    def summary(self) -> Dict[str, Any]: ...
+    def to_json(self, indent: Optional[int] = None) -> str:
+        """The ``spinball.diffusion`` document ``spinball diffuse --json`` writes."""
+
+def escape(
+    table: TableLike,
+    alpha: float,
+    *,
+    ics: int = 1000,
+    collisions: Optional[int] = None,
+    time: Optional[float] = None,
+    seed: int = 0,
+    sampler: Optional[str] = None,
+    threads: Optional[int] = None,
+    window: Optional[Tuple[float, float]] = None,
+    collision_window: Optional[Tuple[float, float]] = None,
+    tail_from: Optional[float] = None,
+    collision_tail_from: Optional[float] = None,
+    extended: bool = False,
+) -> EscapeResult:
+    """How long ``ics`` balls take to leave a table with a hole; censored at the
+    budget (``collisions``, default 100 000, and/or ``time``), never dropped."""
+
+def diffuse(
+    table: TableLike,
+    alpha: float,
+    *,
+    ics: int = 1000,
+    times: Optional[Sequence[float]] = None,
+    until: float = 1000.0,
+    checkpoints: int = 20,
+    seed: int = 0,
+    sampler: Optional[str] = None,
+    threads: Optional[int] = None,
+    window: Optional[Tuple[float, float]] = None,
+    extended: bool = False,
+) -> DiffusionResult:
+    """Unwrapped displacements of ``ics`` balls through a periodic table at
+    ``times``; ``⟨Δr²⟩`` and ``D`` (or the marginal coefficient)."""
