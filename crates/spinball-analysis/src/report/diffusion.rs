@@ -10,7 +10,7 @@ use std::ops::Range;
 use serde::{Deserialize, Serialize};
 use spinball_geometry::Boundary;
 
-use super::open_run::{OpenRun, OpenRunHead, differ, in_order};
+use super::open_run::{OpenPart, OpenRun, OpenRunHead, differ, joined, whole};
 use crate::error::AnalysisError;
 use crate::open::DisplacementRecord;
 use crate::run::{MergeError, Shard};
@@ -52,6 +52,19 @@ pub struct DiffusionDocument {
     pub summary: DiffusionSummary,
     /// One record per initial condition, in index order.
     pub records: Vec<DisplacementRecord>,
+}
+
+impl OpenPart for DiffusionPartialDocument {
+    type Record = DisplacementRecord;
+    fn head(&self) -> &OpenRunHead {
+        &self.head
+    }
+    fn same_run(&self, other: &Self) -> Result<(), MergeError> {
+        DiffusionPartialDocument::same_run(self, other)
+    }
+    fn block(&self) -> (&Range<u64>, &[DisplacementRecord]) {
+        (&self.indices, &self.records)
+    }
 }
 
 impl DiffusionPartialDocument {
@@ -120,16 +133,7 @@ impl DiffusionPartialDocument {
     /// overlap or leave initial conditions out; [`MergeError::Estimate`]
     /// for a run of fewer than two initial conditions.
     pub fn merge(parts: Vec<DiffusionPartialDocument>) -> Result<DiffusionDocument, MergeError> {
-        let first = parts.first().ok_or(MergeError::Empty)?;
-        for p in &parts[1..] {
-            first.same_run(p)?;
-        }
-        let blocks: Vec<Range<u64>> = parts.iter().map(|p| p.indices.clone()).collect();
-        let order = in_order(&blocks, &first.head.ics)?;
-        let records: Vec<DisplacementRecord> = order
-            .iter()
-            .flat_map(|&k| parts[k].records.iter().cloned())
-            .collect();
+        let (first, records) = joined(&parts)?;
         let summary = DiffusionSummary::new(&first.times, &records, first.horizon, first.window)
             .map_err(AnalysisError::from)?;
         Ok(DiffusionDocument {
@@ -160,10 +164,7 @@ impl DiffusionDocument {
         progress: &mut dyn FnMut(u64, u64),
     ) -> Result<Self, AnalysisError> {
         let part = DiffusionPartialDocument::run(run, Shard::WHOLE, times, window, progress)?;
-        DiffusionPartialDocument::merge(vec![part]).map_err(|e| match e {
-            MergeError::Estimate(e) => e,
-            e => AnalysisError::invalid("records", e.to_string()),
-        })
+        whole(DiffusionPartialDocument::merge(vec![part]))
     }
 
     /// One row per initial condition and checkpoint:

@@ -10,7 +10,7 @@ use std::ops::Range;
 use serde::{Deserialize, Serialize};
 use spinball_geometry::Boundary;
 
-use super::open_run::{OpenRun, OpenRunHead, differ, in_order};
+use super::open_run::{OpenPart, OpenRun, OpenRunHead, differ, joined, whole};
 use crate::error::AnalysisError;
 use crate::escape::{EscapeError, EscapeOptions, EscapeSummary, KacPrediction};
 use crate::open::{Budget, EscapeRecord};
@@ -78,6 +78,19 @@ pub struct EscapeDocument {
     pub summary: EscapeSummary,
     /// One record per initial condition, in index order.
     pub records: Vec<EscapeRecord>,
+}
+
+impl OpenPart for EscapePartialDocument {
+    type Record = EscapeRecord;
+    fn head(&self) -> &OpenRunHead {
+        &self.head
+    }
+    fn same_run(&self, other: &Self) -> Result<(), MergeError> {
+        EscapePartialDocument::same_run(self, other)
+    }
+    fn block(&self) -> (&Range<u64>, &[EscapeRecord]) {
+        (&self.indices, &self.records)
+    }
 }
 
 impl EscapePartialDocument {
@@ -148,16 +161,7 @@ impl EscapePartialDocument {
     /// [`MergeError`]: no shards, shards of different runs, blocks that
     /// overlap or leave initial conditions out.
     pub fn merge(parts: Vec<EscapePartialDocument>) -> Result<EscapeDocument, MergeError> {
-        let first = parts.first().ok_or(MergeError::Empty)?;
-        for p in &parts[1..] {
-            first.same_run(p)?;
-        }
-        let blocks: Vec<Range<u64>> = parts.iter().map(|p| p.indices.clone()).collect();
-        let order = in_order(&blocks, &first.head.ics)?;
-        let records: Vec<EscapeRecord> = order
-            .iter()
-            .flat_map(|&k| parts[k].records.iter().copied())
-            .collect();
+        let (first, records) = joined(&parts)?;
         let summary =
             EscapeSummary::new(&records, first.kac, first.options).map_err(AnalysisError::from)?;
         Ok(EscapeDocument {
@@ -184,10 +188,7 @@ impl EscapeDocument {
         progress: &mut dyn FnMut(u64, u64),
     ) -> Result<Self, AnalysisError> {
         let part = EscapePartialDocument::run(run, Shard::WHOLE, budget, options, progress)?;
-        EscapePartialDocument::merge(vec![part]).map_err(|e| match e {
-            MergeError::Estimate(e) => e,
-            e => AnalysisError::invalid("records", e.to_string()),
-        })
+        whole(EscapePartialDocument::merge(vec![part]))
     }
 
     /// One row per ball: [`ESCAPE_CSV_COLUMNS`]; `censored` is 1 or 0,

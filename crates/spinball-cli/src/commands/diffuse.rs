@@ -9,11 +9,10 @@ use spinball_analysis::run::{DiffusionDefaults, Shard};
 use spinball_analysis::transport::FitWindow;
 
 use crate::error::CliError;
-use crate::open_args::{OpenArgs, open_error, progress};
+use crate::open_args::{OpenArgs, run_shard};
 use crate::output::OutputArgs;
 use crate::phase_args::parse_range;
 use crate::stdout::print;
-use crate::watch::progress_bar;
 
 /// The arguments of `spinball diffuse`.
 #[derive(Debug, Clone, Args)]
@@ -74,9 +73,6 @@ impl DiffuseArgs {
 /// horizon, with holes, a bad α, times or window; [`CliError::Failed`] if a
 /// trajectory fails or an output cannot be written.
 pub fn diffuse(args: &DiffuseArgs) -> Result<(), CliError> {
-    let shard = args.shard.unwrap_or(Shard::WHOLE);
-    let shard_path = args.out.shard_path(shard)?;
-    args.out.check()?;
     let times = args.times()?;
     let window = args
         .window
@@ -84,22 +80,20 @@ pub fn diffuse(args: &DiffuseArgs) -> Result<(), CliError> {
         .transpose()
         .map_err(|e| CliError::Usage(format!("--window: {e}")))?;
     let run = args.open.run(args.ics)?;
-    let bar = progress_bar(args.out.quiet);
-    bar.set_prefix("diffuse");
-    let part = DiffusionPartialDocument::run(&run, shard, &times, window, &mut progress(&bar))
-        .map_err(open_error);
-    bar.finish_and_clear();
-    let part = part?;
-    let Some(path) = shard_path else {
-        let doc = DiffusionPartialDocument::merge(vec![part]).map_err(CliError::failed)?;
-        return write_diffusion(&doc, &args.out);
-    };
-    let done = format!(
-        "initial conditions {:?} of {:?}",
-        part.indices, part.head.ics
-    );
-    args.out
-        .write_shard(path, &Document::DiffusionPartial(part), shard, &done)
+    run_shard(
+        &args.out,
+        args.shard,
+        "diffuse",
+        |shard, progress| DiffusionPartialDocument::run(&run, shard, &times, window, progress),
+        |part| {
+            let doc = DiffusionPartialDocument::merge(vec![part]).map_err(CliError::failed)?;
+            write_diffusion(&doc, &args.out)
+        },
+        |part| {
+            let done = format!("initial conditions {:?} of {:?}", part.indices, part.head.ics);
+            (Document::DiffusionPartial(part), done)
+        },
+    )
 }
 
 /// Write the finished diffusion run `doc` to the outputs asked for and

@@ -9,11 +9,10 @@ use spinball_analysis::report::{Document, EscapeDocument, EscapePartialDocument}
 use spinball_analysis::run::{EscapeDefaults, Shard};
 
 use crate::error::CliError;
-use crate::open_args::{OpenArgs, open_error, progress};
+use crate::open_args::{OpenArgs, run_shard};
 use crate::output::OutputArgs;
 use crate::phase_args::parse_range;
 use crate::stdout::print;
-use crate::watch::progress_bar;
 
 /// The arguments of `spinball escape`.
 #[derive(Debug, Clone, Args)]
@@ -94,29 +93,23 @@ impl EscapeArgs {
 /// option; [`CliError::Failed`] if a trajectory fails or an output cannot
 /// be written.
 pub fn escape(args: &EscapeArgs) -> Result<(), CliError> {
-    let shard = args.shard.unwrap_or(Shard::WHOLE);
-    let shard_path = args.out.shard_path(shard)?;
-    args.out.check()?;
     let run = args.open.run(args.ics)?;
-    let bar = progress_bar(args.out.quiet);
-    bar.set_prefix("escape");
-    let part = EscapePartialDocument::run(
-        &run,
-        shard,
-        args.budget(),
-        args.options(),
-        &mut progress(&bar),
+    run_shard(
+        &args.out,
+        args.shard,
+        "escape",
+        |shard, progress| {
+            EscapePartialDocument::run(&run, shard, args.budget(), args.options(), progress)
+        },
+        |part| {
+            let doc = EscapePartialDocument::merge(vec![part]).map_err(CliError::failed)?;
+            write_escape(&doc, &args.out)
+        },
+        |part| {
+            let done = format!("balls {:?} of {:?}", part.indices, part.head.ics);
+            (Document::EscapePartial(part), done)
+        },
     )
-    .map_err(open_error);
-    bar.finish_and_clear();
-    let part = part?;
-    let Some(path) = shard_path else {
-        let doc = EscapePartialDocument::merge(vec![part]).map_err(CliError::failed)?;
-        return write_escape(&doc, &args.out);
-    };
-    let done = format!("balls {:?} of {:?}", part.indices, part.head.ics);
-    args.out
-        .write_shard(path, &Document::EscapePartial(part), shard, &done)
 }
 
 /// Write the finished escape run `doc` to the outputs asked for and print
