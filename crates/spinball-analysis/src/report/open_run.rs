@@ -84,16 +84,46 @@ pub(super) fn differ(fields: &[(&'static str, String, String)]) -> Result<(), Me
     }
 }
 
-/// The order in which `blocks` (each shard's initial conditions) tile
-/// `total`.
+/// A shard of an escape or diffusion run, as merging sees it.
+pub(super) trait OpenPart {
+    /// One initial condition's record.
+    type Record: Clone;
+    /// The run's head.
+    fn head(&self) -> &OpenRunHead;
+    /// Whether `other` is a shard of the same run.
+    fn same_run(&self, other: &Self) -> Result<(), MergeError>;
+    /// The shard's initial conditions and their records.
+    fn block(&self) -> (&Range<u64>, &[Self::Record]);
+}
+
+/// The first of `parts` (shards of one run, in any order) and the records
+/// of all of them in index order.
 ///
 /// # Errors
-/// [`MergeError`] for blocks that overlap or leave initial conditions out.
-pub(super) fn in_order(
-    blocks: &[Range<u64>],
-    total: &Range<u64>,
-) -> Result<Vec<usize>, MergeError> {
-    tile(blocks, total)
+/// [`MergeError`]: no parts, parts of different runs, blocks that overlap
+/// or leave initial conditions out.
+pub(super) fn joined<P: OpenPart>(parts: &[P]) -> Result<(&P, Vec<P::Record>), MergeError> {
+    let first = parts.first().ok_or(MergeError::Empty)?;
+    for p in &parts[1..] {
+        first.same_run(p)?;
+    }
+    let blocks: Vec<Range<u64>> = parts.iter().map(|p| p.block().0.clone()).collect();
+    let order = tile(&blocks, &first.head().ics)?;
+    let records = order
+        .iter()
+        .flat_map(|&k| parts[k].block().1.iter().cloned())
+        .collect();
+    Ok((first, records))
+}
+
+/// A whole run's document from the merge of its one part: the summary's
+/// error as it is, anything else (which one part cannot cause) as an
+/// invalid option.
+pub(super) fn whole<T>(merged: Result<T, MergeError>) -> Result<T, AnalysisError> {
+    merged.map_err(|e| match e {
+        MergeError::Estimate(e) => e,
+        e => AnalysisError::invalid("records", e.to_string()),
+    })
 }
 
 /// An ensemble on an open or periodic table, as the fronts run it: the

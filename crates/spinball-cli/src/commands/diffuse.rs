@@ -90,7 +90,10 @@ pub fn diffuse(args: &DiffuseArgs) -> Result<(), CliError> {
             write_diffusion(&doc, &args.out)
         },
         |part| {
-            let done = format!("initial conditions {:?} of {:?}", part.indices, part.head.ics);
+            let done = format!(
+                "initial conditions {:?} of {:?}",
+                part.indices, part.head.ics
+            );
             (Document::DiffusionPartial(part), done)
         },
     )
