@@ -121,7 +121,7 @@ fn the_escape_summary_is_the_blocks_on_the_records() {
     let k = s.kac.unwrap();
     assert!((k.hole - 0.3).abs() < 1e-12 && k.perimeter == kac.perimeter);
     assert_eq!(
-        *s,
+        **s,
         EscapeSummary::new(&doc.records, s.kac, EscapeOptions::default()).unwrap()
     );
     assert_eq!(s.n, 400);

@@ -74,8 +74,9 @@ pub struct EscapeDocument {
     pub head: OpenRunHead,
     /// When a ball still inside counts as censored.
     pub budget: BudgetRecord,
-    /// The summary of the records.
-    pub summary: EscapeSummary,
+    /// The summary of the records (boxed: it is large, and a document is
+    /// moved around whole).
+    pub summary: Box<EscapeSummary>,
     /// One record per initial condition, in index order.
     pub records: Vec<EscapeRecord>,
 }
@@ -167,7 +168,7 @@ impl EscapePartialDocument {
         Ok(EscapeDocument {
             head: first.head.clone(),
             budget: first.budget,
-            summary,
+            summary: Box::new(summary),
             records,
         })
     }
