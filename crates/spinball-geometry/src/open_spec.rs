@@ -131,8 +131,12 @@ impl FromStr for Built {
     /// Read any built-in table: a closed one as [`Table`] reads it
     /// (`stadium:a=1`), an open one with a hole (`stadium:a=1,hole=0.2`,
     /// `sinai:L=2,R=1,hole=0.2,at=6`, `circle:R=1,hole=0.3`) or a Lorentz
-    /// gas's cell (`lorentz:lattice=square,w=1,R=0.4`). See the
-    /// [module docs](self) for the keys and their defaults.
+    /// gas's cell (`lorentz:lattice=square,w=1,R=0.4`). Keys: `hole` (arc
+    /// length) and `at` (the hole's centre: Birkhoff `s`, by default the
+    /// middle of the stadium's right cap `2a + π/2` or of the Sinai table's
+    /// right side `3L`; for the circle a polar angle, default 0);
+    /// `lattice` (`square` or `triangular`, the default), `w` (1) and `R`
+    /// (0.4).
     ///
     /// ```
     /// use spinball_geometry::{Boundary, Built};

@@ -63,7 +63,8 @@ pub struct ClockSummary {
     pub tail: Fitted<AlgebraicTail>,
 }
 
-/// The summary of an escape run. See the [module docs](self).
+/// The summary of an escape run: counts, and per clock `P(t)`, the mean
+/// against Kac, the escape rate and the tail ([`ClockSummary`]).
 ///
 /// Escape collision counts count the hole: a ball that escaped after `k`
 /// collisions has `N = k + 1`; a censored one that survived `k` collisions

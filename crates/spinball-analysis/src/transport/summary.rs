@@ -16,7 +16,8 @@ use super::{
 use crate::estimators::Fitted;
 use crate::open::DisplacementRecord;
 
-/// The summary of a diffusion run. See the [module docs](self).
+/// The summary of a diffusion run: the horizon, `⟨Δr²⟩(t)`, the estimate
+/// and the window scan.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[must_use]
