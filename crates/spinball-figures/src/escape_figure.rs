@@ -1,0 +1,368 @@
+//! Figures of escape from an open table ([`EscapeFit`]): the survival
+//! curve with its band, the fitted exponential regime on its window and
+//! the algebraic tail where the tail test finds one; the escape rate
+//! against α with the points whose escape is not exponential marked as
+//! such; and the CSV rows of both.
+
+use spinball_analysis::escape::{
+    AlgebraicTail, EscapeError, EscapeLaw, EscapeRate, KacPrediction, KacRatio, RateWindow,
+    Survival, TailLaw, TailWindow,
+};
+use spinball_analysis::estimators::PlusMinus;
+use spinball_analysis::precision::Measurement;
+use spinball_plot::{LineKind, LinePlot, RGBColor, Series, palette};
+
+use crate::csv::{Csv, optional};
+use crate::measured::{ALPHA_LABEL, measured};
+
+/// One escape sample analysed with the default windows: the survival
+/// curve, the rate of the exponential regime and the tail (each `None`
+/// where the sample holds too few escapes for it), the verdict on the
+/// rate, and the mean escape time against Kac's prediction.
+#[derive(Debug, Clone)]
+pub struct EscapeFit {
+    /// The spin parameter.
+    pub alpha: f64,
+    /// Kaplan–Meier `P(t)` with its 95 % band.
+    pub survival: Survival,
+    /// The rate on [`RateWindow::default`].
+    pub rate: Option<EscapeRate>,
+    /// The tail on [`TailWindow::default`].
+    pub tail: Option<AlgebraicTail>,
+    /// What the drift check and the tail test say (`None` without a rate).
+    pub law: Option<EscapeLaw>,
+    /// The mean escape time (a lower bound with censored balls) over Kac's.
+    pub kac: KacRatio,
+}
+
+impl EscapeFit {
+    /// Analyse the escape `times` (`censored[i]` for a ball still inside
+    /// at `times[i]`) of a table whose Kac prediction is `kac`.
+    ///
+    /// # Errors
+    /// As [`Survival::kaplan_meier`] (empty sample, no escape, ...). Too
+    /// few escapes for the rate or the tail leave them `None`.
+    pub fn new(
+        alpha: f64,
+        times: &[f64],
+        censored: &[bool],
+        kac: &KacPrediction,
+    ) -> Result<Self, EscapeError> {
+        let survival = Survival::kaplan_meier(times, censored)?;
+        let rate = EscapeRate::fit(times, censored, RateWindow::default()).ok();
+        let tail = AlgebraicTail::fit(times, censored, TailWindow::default()).ok();
+        let law = rate.map(|r| EscapeLaw::judge(&r, tail.as_ref()));
+        let kac = kac.compare(survival.mean_escape());
+        Ok(EscapeFit {
+            alpha,
+            survival,
+            rate,
+            tail,
+            law,
+            kac,
+        })
+    }
+
+    /// Whether the tail test called the tail algebraic.
+    #[must_use]
+    pub fn algebraic(&self) -> Option<&AlgebraicTail> {
+        self.tail.as_ref().filter(|t| t.law == TailLaw::Algebraic)
+    }
+}
+
+/// At most this many points of a survival curve are drawn (evenly by
+/// index; the curve has one point per distinct escape time).
+const CURVE_POINTS: usize = 600;
+
+/// `n` points from `a` to `b`, evenly in `ln t` when `log` (and `a > 0`).
+fn span(a: f64, b: f64, n: usize, log: bool) -> Vec<f64> {
+    (0..n)
+        .map(|k| {
+            let s = k as f64 / (n - 1) as f64;
+            if log && a > 0.0 {
+                a * (b / a).powf(s)
+            } else {
+                a + s * (b - a)
+            }
+        })
+        .collect()
+}
+
+/// The survival curve of `fit` on a log `P` axis (and a log `t` axis if
+/// `log_t`): the Kaplan–Meier curve in `color` with its 95 % band, the
+/// fitted exponential `A e^{−γt}` dashed over its window (labelled a
+/// window rate only when the escape is not exponential), the power law
+/// `P(t_min)(t/t_min)^{−β}` dotted over the tail when it is algebraic.
+#[must_use]
+pub fn survival_panel(title: &str, fit: &EscapeFit, log_t: bool, color: RGBColor) -> LinePlot {
+    let points = fit.survival.points();
+    let step = points.len().div_ceil(CURVE_POINTS).max(1);
+    let drawn: Vec<_> = points.iter().step_by(step).collect();
+    let km = Series::new(
+        "Kaplan–Meier P(t)",
+        drawn.iter().map(|p| (p.t, p.survival)),
+    )
+    .line_only()
+    .color(color)
+    .band(
+        drawn.iter().map(|p| p.lower),
+        drawn.iter().map(|p| p.upper),
+    )
+    .band_label("95 % band");
+    let mut plot = LinePlot::with_axes(title, "time t", "survival P(t)")
+        .log_y(true)
+        .log_x(log_t)
+        .series(km);
+    if let Some(rate) = fit.rate {
+        let what = if fit.law.is_some_and(|l| l.is_exponential()) {
+            "exponential fit"
+        } else {
+            "window rate (not exponential)"
+        };
+        let label = format!(
+            "{what}: γ = {} on [{}, {}]",
+            PlusMinus::new(rate.gamma, rate.sem),
+            short(rate.t0),
+            short(rate.t1)
+        );
+        let ts = span(rate.t0.max(1e-9), rate.t1, 60, log_t);
+        plot = plot.series(
+            Series::new(
+                label,
+                ts.iter()
+                    .map(|&t| (t, rate.amplitude * (-rate.gamma * t).exp())),
+            )
+            .line_only()
+            .kind(LineKind::Dashed)
+            .color(RGBColor(0x40, 0x40, 0x40)),
+        );
+    }
+    if let Some(tail) = fit.algebraic() {
+        let p0 = fit.survival.at(tail.t_min);
+        let label = format!(
+            "algebraic tail t^−β: β = {}",
+            PlusMinus::new(tail.beta, tail.beta_sem)
+        );
+        let ts = span(tail.t_min, tail.t_max, 60, log_t);
+        plot = plot.series(
+            Series::new(
+                label,
+                ts.iter()
+                    .map(|&t| (t, p0 * (t / tail.t_min).powf(-tail.beta))),
+            )
+            .line_only()
+            .kind(LineKind::Dotted)
+            .color(RGBColor(0xD5, 0x5E, 0x00)),
+        );
+    }
+    plot
+}
+
+/// A time for a legend: three significant digits.
+fn short(t: f64) -> String {
+    spinball_plot::two_digits(t)
+}
+
+/// The escape rate against α of `fits`, in three series: the rates of
+/// exponential escapes (`γ ± SE`), the window rates of escapes that are
+/// not exponential (drawn apart, labelled as not a rate of the table), and
+/// rates whose drift could not be checked. Empty series are left out.
+#[must_use]
+pub fn escape_rate_series(fits: &[EscapeFit]) -> Vec<Series> {
+    let pick = |keep: fn(EscapeLaw) -> bool| -> Vec<(f64, Measurement)> {
+        fits.iter()
+            .filter_map(|f| {
+                let (rate, law) = (f.rate?, f.law?);
+                keep(law).then_some((f.alpha, Measurement::new(rate.gamma, rate.sem)))
+            })
+            .collect()
+    };
+    let groups = [
+        (
+            pick(|l| l.is_exponential()),
+            "γ ± SE (exponential escape)",
+            palette(0),
+        ),
+        (
+            pick(|l| matches!(l, EscapeLaw::NotExponential { .. })),
+            "not exponential: rate of the default window only",
+            palette(1),
+        ),
+        (
+            pick(|l| l == EscapeLaw::Unchecked),
+            "unchecked (too few escapes)",
+            palette(6),
+        ),
+    ];
+    groups
+        .into_iter()
+        .filter(|(points, _, _)| !points.is_empty())
+        .map(|(points, label, color)| measured(label, points).markers_only().color(color))
+        .collect()
+}
+
+/// `γ(α)` of `fits` on a log axis ([`escape_rate_series`]).
+#[must_use]
+pub fn escape_rate_panel(title: &str, fits: &[EscapeFit]) -> LinePlot {
+    escape_rate_series(fits).into_iter().fold(
+        LinePlot::with_axes(title, ALPHA_LABEL, "escape rate γ (per unit time)").log_y(true),
+        LinePlot::series,
+    )
+}
+
+/// The tail exponent `β ± SE` against α where the tail is algebraic, and
+/// the censored share of the balls (in percent) on the same axis.
+#[must_use]
+pub fn tail_exponent_panel(title: &str, fits: &[EscapeFit]) -> Option<LinePlot> {
+    let beta: Vec<(f64, Measurement)> = fits
+        .iter()
+        .filter_map(|f| {
+            f.algebraic()
+                .map(|t| (f.alpha, Measurement::new(t.beta, t.beta_sem)))
+        })
+        .collect();
+    (!beta.is_empty()).then(|| {
+        LinePlot::with_axes(title, ALPHA_LABEL, "tail exponent β")
+            .series(measured("β ± SE where the tail is algebraic", beta).color(palette(1)))
+    })
+}
+
+/// The columns of [`escape_row`].
+pub const ESCAPE_COLUMNS: [&str; 22] = [
+    "alpha",
+    "balls",
+    "escaped",
+    "censored",
+    "last_time",
+    "law",
+    "gamma",
+    "gamma_sem",
+    "t0",
+    "t1",
+    "window_escapes",
+    "drift_se",
+    "tail_law",
+    "beta",
+    "beta_sem",
+    "t_min",
+    "tail_escapes",
+    "vuong_z",
+    "mean_escape_time",
+    "mean_sem",
+    "mean_complete",
+    "kac_time",
+];
+
+/// Append the row of `fit` to `csv` (made with [`ESCAPE_COLUMNS`]); what
+/// was not fitted is empty.
+pub fn escape_row(csv: &mut Csv, fit: &EscapeFit) {
+    let (s, r, t, m) = (&fit.survival, fit.rate, fit.tail, fit.kac.measured);
+    csv.row(&[
+        &fit.alpha,
+        &s.n(),
+        &s.escaped(),
+        &s.censored(),
+        &s.last_time(),
+        &optional(fit.law.map(|l| l.to_string())),
+        &optional(r.map(|r| r.gamma)),
+        &optional(r.map(|r| r.sem)),
+        &optional(r.map(|r| r.t0)),
+        &optional(r.map(|r| r.t1)),
+        &optional(r.map(|r| r.escaped)),
+        &optional(r.and_then(|r| r.drift)),
+        &optional(t.map(|t| t.law)),
+        &optional(t.map(|t| t.beta)),
+        &optional(t.map(|t| t.beta_sem)),
+        &optional(t.map(|t| t.t_min)),
+        &optional(t.map(|t| t.escaped)),
+        &optional(t.map(|t| t.vuong_z)),
+        &m.mean,
+        &m.sem,
+        &m.complete,
+        &fit.kac.predicted,
+    ]);
+}
+
+/// The columns of [`survival_rows`].
+pub const SURVIVAL_COLUMNS: [&str; 6] = ["alpha", "t", "survival", "std_error", "lower", "upper"];
+
+/// Append the survival curve of `fit`, one row per distinct escape time,
+/// to `csv` (made with [`SURVIVAL_COLUMNS`]).
+pub fn survival_rows(csv: &mut Csv, fit: &EscapeFit) {
+    for p in fit.survival.points() {
+        csv.row(&[
+            &fit.alpha,
+            &p.t,
+            &p.survival,
+            &p.std_error,
+            &p.lower,
+            &p.upper,
+        ]);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use spinball_plot::Plot;
+
+    /// Quantiles of `P(t) = 0.7 e^{−0.5t} + 0.3 (1 + t)^{−1}`-like
+    /// samples are not needed: an exponential and a power law suffice.
+    fn quantiles(n: usize, budget: f64, inv: impl Fn(f64) -> f64) -> (Vec<f64>, Vec<bool>) {
+        (0..n)
+            .map(|i| {
+                let x = inv(1.0 - (i as f64 + 0.5) / n as f64);
+                (x.min(budget), x > budget)
+            })
+            .unzip()
+    }
+
+    #[test]
+    fn panels_and_rows_of_an_exponential_and_a_power_law() {
+        let kac = KacPrediction::new(4.0 + 2.0 * std::f64::consts::PI, 4.0 + std::f64::consts::PI, 0.2, 0.0).unwrap();
+        // Rate 0.5 censored at t = 8; P = t^{-1/2} censored at 10⁴.
+        let (t, c) = quantiles(3000, 8.0, |u| -u.ln() / 0.5);
+        let exp = EscapeFit::new(0.0, &t, &c, &kac).unwrap();
+        let (t, c) = quantiles(3000, 1e4, |u| u.powf(-2.0));
+        let power = EscapeFit::new(1.0, &t, &c, &kac).unwrap();
+        assert_eq!(exp.law, Some(EscapeLaw::Exponential));
+        assert!(!power.law.unwrap().is_exponential());
+        assert!(exp.algebraic().is_none() && power.algebraic().is_some());
+        // The rates land in two series: the exponential one, and the
+        // window rate of the power law, apart.
+        let fits = [exp.clone(), power.clone()];
+        assert_eq!(escape_rate_series(&fits).len(), 2);
+        assert_eq!(escape_rate_series(&fits[..1]).len(), 1);
+        assert!(escape_rate_panel("γ", &fits).validate().is_ok());
+        assert!(tail_exponent_panel("β", &fits).unwrap().validate().is_ok());
+        assert!(tail_exponent_panel("β", &fits[..1]).is_none());
+        for fit in &fits {
+            for log_t in [false, true] {
+                let panel = survival_panel("P", fit, log_t, palette(0));
+                assert!(panel.validate().is_ok());
+            }
+        }
+        let mut csv = Csv::new(&ESCAPE_COLUMNS);
+        escape_row(&mut csv, &exp);
+        escape_row(&mut csv, &power);
+        let rows: Vec<Vec<String>> = csv
+            .as_str()
+            .lines()
+            .skip(1)
+            .map(|l| l.split(',').map(str::to_string).collect())
+            .collect();
+        assert_eq!(rows.len(), 2);
+        assert_eq!(rows[0][5], "exponential");
+        let gamma: f64 = rows[0][6].parse().unwrap();
+        assert_eq!(gamma, exp.rate.unwrap().gamma);
+        // Quantiles of rate 0.5: γ within 3 SE.
+        assert!((gamma - 0.5).abs() < 3.0 * exp.rate.unwrap().sem);
+        assert_eq!(rows[1][12], "algebraic");
+        // Quantiles of t^{-1/2}: β within 3 SE of 0.5.
+        let tail = power.tail.unwrap();
+        assert!((tail.beta - 0.5).abs() < 3.0 * tail.beta_sem, "{tail}");
+        let mut curve = Csv::new(&SURVIVAL_COLUMNS);
+        survival_rows(&mut curve, &exp);
+        assert_eq!(curve.rows(), exp.survival.points().len());
+    }
+}
