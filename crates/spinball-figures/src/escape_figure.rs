@@ -10,7 +10,7 @@ use spinball_analysis::escape::{
 };
 use spinball_analysis::estimators::PlusMinus;
 use spinball_analysis::precision::Measurement;
-use spinball_plot::{LineKind, LinePlot, RGBColor, Series, palette};
+use spinball_plot::{Legend, LineKind, LinePlot, RGBColor, Series, palette};
 
 use crate::csv::{Csv, optional};
 use crate::measured::{ALPHA_LABEL, measured};
@@ -95,23 +95,25 @@ fn span(a: f64, b: f64, n: usize, log: bool) -> Vec<f64> {
 /// `P(t_min)(t/t_min)^{−β}` dotted over the tail when it is algebraic.
 #[must_use]
 pub fn survival_panel(title: &str, fit: &EscapeFit, log_t: bool, color: RGBColor) -> LinePlot {
-    let points = fit.survival.points();
-    let step = points.len().div_ceil(CURVE_POINTS).max(1);
-    let drawn: Vec<_> = points.iter().step_by(step).collect();
-    let km = Series::new(
-        "Kaplan–Meier P(t)",
-        drawn.iter().map(|p| (p.t, p.survival)),
-    )
-    .line_only()
-    .color(color)
-    .band(
-        drawn.iter().map(|p| p.lower),
-        drawn.iter().map(|p| p.upper),
-    )
-    .band_label("95 % band");
+    let curve = survival_steps(&fit.survival);
+    let km = Series::new("Kaplan–Meier P(t)", curve.iter().map(|p| (p.0, p.1)))
+        .line_only()
+        .color(color)
+        .band(curve.iter().map(|p| p.2), curve.iter().map(|p| p.3))
+        .band_label("95 % band");
     let mut plot = LinePlot::with_axes(title, "time t", "survival P(t)")
         .log_y(true)
         .log_x(log_t)
+        // Log–log: the curve runs from upper left to lower right. Log–lin:
+        // it falls along the left edge, then runs right low (most balls
+        // escape) or high (a plateau of balls that stay).
+        .legend(
+            if log_t || fit.survival.at(fit.survival.last_time()) > 0.05 {
+                Legend::LowerLeft
+            } else {
+                Legend::UpperRight
+            },
+        )
         .series(km);
     if let Some(rate) = fit.rate {
         let what = if fit.law.is_some_and(|l| l.is_exponential()) {
@@ -158,6 +160,34 @@ pub fn survival_panel(title: &str, fit: &EscapeFit, log_t: bool, color: RGBColor
     plot
 }
 
+/// The step function of `survival` as a polyline `(t, P, lower, upper)`:
+/// at each drawn escape time the value before it, then after it (at most
+/// [`CURVE_POINTS`] escape times, evenly by index, the last one always),
+/// held flat to the last observed time (the censored balls).
+fn survival_steps(survival: &Survival) -> Vec<(f64, f64, f64, f64)> {
+    let points = survival.points();
+    let step = points.len().div_ceil(CURVE_POINTS).max(1);
+    let mut drawn: Vec<_> = points.iter().step_by(step).collect();
+    if let (Some(last), Some(kept)) = (points.last(), drawn.last())
+        && !std::ptr::eq(last, *kept)
+    {
+        drawn.push(last);
+    }
+    let mut out = Vec::with_capacity(2 * drawn.len() + 1);
+    let mut before = (1.0, 1.0, 1.0);
+    for p in drawn {
+        out.push((p.t, before.0, before.1, before.2));
+        out.push((p.t, p.survival, p.lower, p.upper));
+        before = (p.survival, p.lower, p.upper);
+    }
+    if let Some(&(t, ..)) = out.last()
+        && survival.last_time() > t
+    {
+        out.push((survival.last_time(), before.0, before.1, before.2));
+    }
+    out
+}
+
 /// A time for a legend: three significant digits.
 fn short(t: f64) -> String {
     spinball_plot::two_digits(t)
@@ -197,7 +227,12 @@ pub fn escape_rate_series(fits: &[EscapeFit]) -> Vec<Series> {
     groups
         .into_iter()
         .filter(|(points, _, _)| !points.is_empty())
-        .map(|(points, label, color)| measured(label, points).markers_only().color(color))
+        .map(|(points, label, color)| {
+            measured(label, points)
+                .markers_only()
+                .marker_radius(7)
+                .color(color)
+        })
         .collect()
 }
 
@@ -205,7 +240,12 @@ pub fn escape_rate_series(fits: &[EscapeFit]) -> Vec<Series> {
 #[must_use]
 pub fn escape_rate_panel(title: &str, fits: &[EscapeFit]) -> LinePlot {
     escape_rate_series(fits).into_iter().fold(
-        LinePlot::with_axes(title, ALPHA_LABEL, "escape rate γ (per unit time)").log_y(true),
+        LinePlot::with_axes(
+            title,
+            ALPHA_LABEL,
+            "escape rate γ of the window (per unit time)",
+        )
+        .log_y(true),
         LinePlot::series,
     )
 }
@@ -319,7 +359,13 @@ mod tests {
 
     #[test]
     fn panels_and_rows_of_an_exponential_and_a_power_law() {
-        let kac = KacPrediction::new(4.0 + 2.0 * std::f64::consts::PI, 4.0 + std::f64::consts::PI, 0.2, 0.0).unwrap();
+        let kac = KacPrediction::new(
+            4.0 + 2.0 * std::f64::consts::PI,
+            4.0 + std::f64::consts::PI,
+            0.2,
+            0.0,
+        )
+        .unwrap();
         // Rate 0.5 censored at t = 8; P = t^{-1/2} censored at 10⁴.
         let (t, c) = quantiles(3000, 8.0, |u| -u.ln() / 0.5);
         let exp = EscapeFit::new(0.0, &t, &c, &kac).unwrap();
@@ -361,6 +407,17 @@ mod tests {
         // Quantiles of t^{-1/2}: β within 3 SE of 0.5.
         let tail = power.tail.unwrap();
         assert!((tail.beta - 0.5).abs() < 3.0 * tail.beta_sem, "{tail}");
+        // The drawn step function ends flat at the last observed time.
+        let steps = survival_steps(&power.survival);
+        let last = power.survival.points().last().unwrap();
+        assert_eq!(steps.last().unwrap().0, power.survival.last_time());
+        assert_eq!(steps.last().unwrap().1, last.survival);
+        assert!(steps.len() <= 2 * CURVE_POINTS + 3);
+        assert!(
+            steps
+                .windows(2)
+                .all(|w| w[0].0 <= w[1].0 && w[0].1 >= w[1].1)
+        );
         let mut curve = Csv::new(&SURVIVAL_COLUMNS);
         survival_rows(&mut curve, &exp);
         assert_eq!(curve.rows(), exp.survival.points().len());

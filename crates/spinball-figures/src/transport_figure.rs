@@ -118,12 +118,10 @@ pub fn window_scan_series(label: &str, run: &DiffusionRun) -> Series {
 pub fn apparent_d_series(label: &str, run: &DiffusionRun, color: RGBColor) -> Series {
     measured_band(
         label,
-        run.msd.points().iter().map(|p| {
-            (
-                p.t,
-                Measurement::new(p.apparent_d(), p.sem / (4.0 * p.t)),
-            )
-        }),
+        run.msd
+            .points()
+            .iter()
+            .map(|p| (p.t, Measurement::new(p.apparent_d(), p.sem / (4.0 * p.t)))),
     )
     .line_only()
     .color(color)
@@ -251,9 +249,10 @@ mod tests {
         assert!(per_ln_t.abs() < 1e-12);
         assert!(diffusion_panel("D", "D", &runs).validate().is_ok());
         let scan = window_scan_series("α = 0", &runs[0]);
-        let lines = LinePlot::new()
-            .series(scan)
-            .series(apparent_d_series("α = 0", &runs[0], palette(0)));
+        let lines =
+            LinePlot::new()
+                .series(scan)
+                .series(apparent_d_series("α = 0", &runs[0], palette(0)));
         assert!(lines.validate().is_ok());
         // The same data on an infinite-horizon table: no finite D, no point.
         let marginal =
