@@ -95,7 +95,7 @@ fn main() -> ExitCode {
                 panels.push(survival_panel(&title, fit, log_t, palette([0, 2, 3][k])));
             }
         }
-        report.png("escape_survival.png", &panels, (2400, 1400))?;
+        report.png("escape_survival.png", &panels, (2200, 1300))?;
         let mut rates = Grid::new(1, 2).title(format!(
             "Escape from the stadium with a hole: default windows, {balls} balls"
         ));

@@ -96,7 +96,7 @@ fn span(a: f64, b: f64, n: usize, log: bool) -> Vec<f64> {
 #[must_use]
 pub fn survival_panel(title: &str, fit: &EscapeFit, log_t: bool, color: RGBColor) -> LinePlot {
     let curve = survival_steps(&fit.survival);
-    let km = Series::new("Kaplan–Meier P(t)", curve.iter().map(|p| (p.0, p.1)))
+    let km = Series::new("Kaplan–Meier", curve.iter().map(|p| (p.0, p.1)))
         .line_only()
         .color(color)
         .band(curve.iter().map(|p| p.2), curve.iter().map(|p| p.3))
@@ -116,13 +116,13 @@ pub fn survival_panel(title: &str, fit: &EscapeFit, log_t: bool, color: RGBColor
         )
         .series(km);
     if let Some(rate) = fit.rate {
-        let what = if fit.law.is_some_and(|l| l.is_exponential()) {
-            "exponential fit"
+        let (what, note) = if fit.law.is_some_and(|l| l.is_exponential()) {
+            ("exp. fit", "")
         } else {
-            "window rate (not exponential)"
+            ("window rate", " (not exp.)")
         };
         let label = format!(
-            "{what}: γ = {} on [{}, {}]",
+            "{what} γ = {} on [{}, {}]{note}",
             PlusMinus::new(rate.gamma, rate.sem),
             short(rate.t0),
             short(rate.t1)
@@ -142,7 +142,7 @@ pub fn survival_panel(title: &str, fit: &EscapeFit, log_t: bool, color: RGBColor
     if let Some(tail) = fit.algebraic() {
         let p0 = fit.survival.at(tail.t_min);
         let label = format!(
-            "algebraic tail t^−β: β = {}",
+            "tail t^−β, β = {}",
             PlusMinus::new(tail.beta, tail.beta_sem)
         );
         let ts = span(tail.t_min, tail.t_max, 60, log_t);
