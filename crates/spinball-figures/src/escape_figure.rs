@@ -345,17 +345,7 @@ pub fn survival_rows(csv: &mut Csv, fit: &EscapeFit) {
 mod tests {
     use super::*;
     use spinball_plot::Plot;
-
-    /// Quantiles of `P(t) = 0.7 e^{−0.5t} + 0.3 (1 + t)^{−1}`-like
-    /// samples are not needed: an exponential and a power law suffice.
-    fn quantiles(n: usize, budget: f64, inv: impl Fn(f64) -> f64) -> (Vec<f64>, Vec<bool>) {
-        (0..n)
-            .map(|i| {
-                let x = inv(1.0 - (i as f64 + 0.5) / n as f64);
-                (x.min(budget), x > budget)
-            })
-            .unzip()
-    }
+    use spinball_test_support::censored_quantiles;
 
     #[test]
     fn panels_and_rows_of_an_exponential_and_a_power_law() {
@@ -367,9 +357,9 @@ mod tests {
         )
         .unwrap();
         // Rate 0.5 censored at t = 8; P = t^{-1/2} censored at 10⁴.
-        let (t, c) = quantiles(3000, 8.0, |u| -u.ln() / 0.5);
+        let (t, c) = censored_quantiles(3000, 8.0, |u| -u.ln() / 0.5);
         let exp = EscapeFit::new(0.0, &t, &c, &kac).unwrap();
-        let (t, c) = quantiles(3000, 1e4, |u| u.powf(-2.0));
+        let (t, c) = censored_quantiles(3000, 1e4, |u| u.powf(-2.0));
         let power = EscapeFit::new(1.0, &t, &c, &kac).unwrap();
         assert_eq!(exp.law, Some(EscapeLaw::Exponential));
         assert!(!power.law.unwrap().is_exponential());

@@ -101,22 +101,12 @@ impl fmt::Display for EscapeLaw {
 mod tests {
     use super::*;
     use crate::escape::{RateWindow, TailWindow};
-
-    /// Quantile samples (deterministic): `n` balls of the survival law
-    /// whose inverse is `inv(u)`, censored at `budget`.
-    fn quantiles(n: usize, budget: f64, inv: impl Fn(f64) -> f64) -> (Vec<f64>, Vec<bool>) {
-        (0..n)
-            .map(|i| {
-                let x = inv(1.0 - (i as f64 + 0.5) / n as f64);
-                (x.min(budget), x > budget)
-            })
-            .unzip()
-    }
+    use spinball_test_support::censored_quantiles;
 
     #[test]
     fn an_exponential_sample_has_a_rate() {
         // Rate 0.5, 4000 balls, censored at t = 8 (P = e^{-4} ≈ 1.8 %).
-        let (t, c) = quantiles(4000, 8.0, |u| -u.ln() / 0.5);
+        let (t, c) = censored_quantiles(4000, 8.0, |u| -u.ln() / 0.5);
         let rate = EscapeRate::fit(&t, &c, RateWindow::default()).unwrap();
         let tail = AlgebraicTail::fit(&t, &c, TailWindow::default()).unwrap();
         assert_ne!(tail.law, TailLaw::Algebraic);
@@ -131,7 +121,7 @@ mod tests {
         // P(t) = t^{-0.5} for t > 1, censored at 10⁴ (P = 1 %): the
         // default window's rate falls across it (drift) and the tail test
         // says algebraic.
-        let (t, c) = quantiles(4000, 1e4, |u| u.powf(-2.0));
+        let (t, c) = censored_quantiles(4000, 1e4, |u| u.powf(-2.0));
         let rate = EscapeRate::fit(&t, &c, RateWindow::default()).unwrap();
         let tail = AlgebraicTail::fit(&t, &c, TailWindow::default()).unwrap();
         let law = EscapeLaw::judge(&rate, Some(&tail));
@@ -155,7 +145,7 @@ mod tests {
     #[test]
     fn too_few_escapes_give_no_verdict() {
         // 15 escapes in the window: the drift needs 10 in each half.
-        let (t, c) = quantiles(30, 100.0, |u| -u.ln());
+        let (t, c) = censored_quantiles(30, 100.0, |u| -u.ln());
         let rate = EscapeRate::fit(&t, &c, RateWindow::Range { t0: 0.0, t1: 100.0 }).unwrap();
         let rate = EscapeRate {
             drift: None,
