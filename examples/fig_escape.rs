@@ -100,7 +100,7 @@ fn main() -> ExitCode {
             "Escape from the stadium with a hole: default windows, {balls} balls"
         ));
         rates.push(escape_rate_panel(
-            "escape rate of the exponential regime",
+            "escape rate γ ± SE on the default window",
             &fits,
         ));
         if let Some(beta) = tail_exponent_panel("algebraic tail P ∝ t^−β", &fits) {
