@@ -144,13 +144,15 @@ pub const DIFFUSION_COLUMNS: [&str; 12] = [
 ];
 
 /// Append the estimate of `run` (on `table`) to `csv` (made with
-/// [`DIFFUSION_COLUMNS`]): law `normal` (`D`) or `marginal` (`D_m`), the
+/// [`DIFFUSION_COLUMNS`]): law `normal` (`D`), `marginal` (`D_m`) or
+/// `ballistic` (no finite `D`; the coefficient of the fit over all balls), the
 /// default window, and the trend of the window scan.
 pub fn diffusion_row(csv: &mut Csv, table: &str, run: &DiffusionRun) {
     let fit = run.estimate.fit();
     let law = match run.estimate {
         Diffusion::Normal(_) => "normal",
         Diffusion::Marginal(_) => "marginal",
+        Diffusion::Ballistic(..) => "ballistic",
     };
     csv.row(&[
         &table,

@@ -17,17 +17,21 @@
 //!   over a stated [`FitWindow`], with its error from the per-IC
 //!   statistics: a [`Diffusion::Normal`] `D` for a [`Horizon::Finite`]
 //!   table, a [`Diffusion::Marginal`] coefficient of `t ln t` growth for
-//!   [`Horizon::Infinite`] (never a finite `D` that is not one);
+//!   [`Horizon::Infinite`], and [`Diffusion::Ballistic`] when a
+//!   finite-horizon ensemble holds balls that fly straight through the
+//!   lattice ([`Ballistic`]): never a finite `D` that is not one;
 //! - [`WindowScan`]: the estimate over successive windows (each twice as
 //!   late as the one before) and its trend in `ln t`, the diagnostic of
 //!   normal against marginal growth.
 //!
 //! The definitions, estimators and their errors are in `docs/TRANSPORT.md`.
 
+mod ballistic;
 mod diffusion;
 mod displacements;
 mod horizon;
 
+pub use ballistic::{BALLISTIC_EXCESS, Ballistic, STRAIGHTNESS};
 pub use diffusion::{
     Diffusion, DiffusionFit, FitWindow, MIN_POINTS, Trend, WindowScan, diffusion, window_scan,
 };
