@@ -91,8 +91,8 @@ impl Csv {
     }
 }
 
-/// An optional number as a field: the number, or empty.
-pub fn optional(x: Option<f64>) -> String {
+/// An optional value as a field: the value, or empty.
+pub fn optional<T: Display>(x: Option<T>) -> String {
     x.map_or(String::new(), |v| v.to_string())
 }
 
@@ -113,7 +113,7 @@ mod tests {
     fn quoting_and_numbers() {
         let mut csv = Csv::new(&["a", "b,c"]);
         csv.row(&[&"say \"hi\"", &0.1])
-            .row(&[&optional(None), &optional(Some(2.5))]);
+            .row(&[&optional(None::<f64>), &optional(Some(2.5))]);
         csv.row_from([1.5, -2.0]);
         assert_eq!(Csv::with_columns("x, y,z"), Csv::new(&["x", "y", "z"]));
         assert_eq!(csv.rows(), 3);

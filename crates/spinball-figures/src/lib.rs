@@ -30,6 +30,10 @@
 //!   (periodic orbits on an FTLE map, the island around one, its area
 //!   against α),
 //!   [`kac_histogram`] (return times against Kac's lemma),
+//!   [`survival_panel`] and [`escape_rate_panel`] (escape from an open
+//!   table: `P(t)` with its fits, `γ(α)` with non-exponential escapes
+//!   marked), [`diffusion_panel`], [`window_scan_series`] and
+//!   [`apparent_d_series`] (transport on a periodic table),
 //!   [`q_class_panel`] and [`q_conserved_panel`] (`ΔQ` between collisions),
 //!   [`lcn_trace_panel`] (single-trajectory LCN traces),
 //!   [`collision_rate_grid`] (ν and λ/ν against α),
@@ -65,6 +69,7 @@ mod csv;
 mod curves;
 mod energy_figure;
 mod error;
+mod escape_figure;
 mod figure;
 mod island_figure;
 mod kac_figure;
@@ -82,6 +87,7 @@ mod result_tables;
 mod scan;
 mod section_figure;
 mod table_i;
+mod transport_figure;
 mod work_plots;
 
 pub use args::{DEFAULT_SEED, FigureArgs, Mode, NoOptions, usage};
@@ -92,6 +98,10 @@ pub use energy_figure::{
     energy_trace_rows,
 };
 pub use error::FigureError;
+pub use escape_figure::{
+    ESCAPE_COLUMNS, EscapeFit, SURVIVAL_COLUMNS, escape_rate_panel, escape_rate_series, escape_row,
+    survival_panel, survival_rows, tail_exponent_panel,
+};
 pub use figure::{BoxError, run_figure, run_figure_with};
 pub use island_figure::{ISLAND_COLUMNS, island_panel, island_row};
 pub use kac_figure::{
@@ -119,6 +129,11 @@ pub use section_figure::{SECTION_COLUMNS, section_cloud, section_panel, section_
 pub use table_i::{
     TableIColumn, TableIRecord, TableIRow, table_i_csv, table_i_grid, table_i_markdown,
     table_i_paper, table_i_plot, table_i_reference, table_i_rows,
+};
+pub use transport_figure::{
+    DIFFUSION_COLUMNS, DiffusionRun, MSD_COLUMNS, WINDOW_COLUMNS, apparent_d_series,
+    diffusion_panel, diffusion_row, diffusion_series, log_times, msd_rows, window_rows,
+    window_scan_series,
 };
 pub use work_plots::{
     WORK_COLUMNS, bias_vs_t, error_vs_time, method_label, sem_vs_n, time_to_target, work_rows,

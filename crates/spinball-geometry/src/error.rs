@@ -243,6 +243,14 @@ pub enum GeometryError {
         /// Its translation, y.
         y: f64,
     },
+    /// The horizon of a periodic table could not be decided: the lattice
+    /// directions a corridor could run along cannot be bounded, or are too
+    /// many to check.
+    #[error("the horizon of this periodic table cannot be decided: {why}")]
+    HorizonUndecided {
+        /// Why, and what would make it decidable.
+        why: String,
+    },
     /// A periodic cell's obstacle fills it: no room is left for the ball,
     /// or the obstacles of neighbouring cells touch.
     #[error(

@@ -28,6 +28,7 @@ use glam::DVec2;
 
 use crate::arc::ArcSegment;
 use crate::error::{GeometryError, length};
+use crate::horizon::Horizon;
 use crate::line::LineSegment;
 use crate::segment::Segment;
 use crate::segment_table::SegmentTable;
@@ -41,31 +42,6 @@ pub enum Lattice {
     Square,
     /// Triangular lattice of spacing `w` (nearest disks `w` apart).
     Triangular,
-}
-
-/// Whether free flights are bounded.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
-pub enum Horizon {
-    /// Every straight line meets a disk: free flights are bounded and
-    /// diffusion is normal.
-    Finite,
-    /// A corridor free of disks runs along `direction`: free flights are
-    /// unbounded and the mean-square displacement grows as `t ln t`
-    /// (marginally anomalous), so no finite diffusion coefficient exists.
-    Infinite {
-        /// Unit vector along a free corridor.
-        direction: DVec2,
-    },
-}
-
-impl Horizon {
-    /// Whether the horizon is finite.
-    #[must_use]
-    pub fn is_finite(&self) -> bool {
-        matches!(self, Horizon::Finite)
-    }
 }
 
 /// A periodic Lorentz gas: a lattice of spacing `w` with disks of radius
@@ -131,18 +107,21 @@ impl LorentzGas {
     }
 
     /// The horizon, in closed form: the square lattice has a corridor along
-    /// its rows for every `R < w/2`; the triangular lattice's widest
-    /// corridor (along its rows, of width `√3 w/2 − 2R`) closes at
-    /// `R = √3 w/4`, and with it every other.
+    /// its rows, of width `w − 2R`, for every `R < w/2`; the triangular
+    /// lattice's widest corridor (along its rows, of width `√3 w/2 − 2R`)
+    /// closes at `R = √3 w/4`, and with it every other.
+    /// [`SegmentTable::horizon`] finds the same from the cell's walls.
     #[must_use]
     pub fn horizon(&self) -> Horizon {
-        let row = Horizon::Infinite {
+        let row = |width| Horizon::Infinite {
             direction: DVec2::X,
+            width,
         };
+        let (w, r) = (self.w, self.r);
         match self.lattice {
-            Lattice::Square => row,
-            Lattice::Triangular if self.r >= 3f64.sqrt() * self.w / 4.0 => Horizon::Finite,
-            Lattice::Triangular => row,
+            Lattice::Square => row(w - 2.0 * r),
+            Lattice::Triangular if r >= 3f64.sqrt() * w / 4.0 => Horizon::Finite,
+            Lattice::Triangular => row(0.5 * 3f64.sqrt() * w - 2.0 * r),
         }
     }
 

@@ -108,17 +108,21 @@ fn the_triangular_cell_is_a_rhombus_minus_one_disk() {
 
 #[test]
 fn the_horizon_is_the_closed_form() {
-    let corridor = Horizon::Infinite {
+    let corridor = |width| Horizon::Infinite {
         direction: DVec2::X,
+        width,
     };
     for r in [0.01, 0.3, 0.49] {
-        assert_eq!(LorentzGas::square(1.0, r).unwrap().horizon(), corridor);
+        assert_eq!(
+            LorentzGas::square(1.0, r).unwrap().horizon(),
+            corridor(1.0 - 2.0 * r)
+        );
     }
     // Triangular: finite iff √3 w/4 ≤ R < w/2 (√3/4 = 0.4330…).
     let edge = 3f64.sqrt() / 4.0;
     assert_eq!(
         LorentzGas::triangular(1.0, 0.43).unwrap().horizon(),
-        corridor
+        corridor(0.5 * 3f64.sqrt() - 0.86)
     );
     assert!(
         LorentzGas::triangular(1.0, edge)

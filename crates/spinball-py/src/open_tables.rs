@@ -447,7 +447,7 @@ impl PyDiffusionResult {
     fn diffusion_coefficient(&self) -> Option<(f64, f64)> {
         match self.doc.summary.estimate.fit()? {
             Diffusion::Normal(f) => Some((f.coefficient, f.sem)),
-            Diffusion::Marginal(_) => None,
+            Diffusion::Marginal(_) | Diffusion::Ballistic(..) => None,
         }
     }
     /// `(D_m, SEM)`, the coefficient of `⟨Δr²⟩ ≈ 4 D_m t ln t`, for an
@@ -456,7 +456,7 @@ impl PyDiffusionResult {
     fn marginal_coefficient(&self) -> Option<(f64, f64)> {
         match self.doc.summary.estimate.fit()? {
             Diffusion::Marginal(f) => Some((f.coefficient, f.sem)),
-            Diffusion::Normal(_) => None,
+            Diffusion::Normal(_) | Diffusion::Ballistic(..) => None,
         }
     }
     /// The fit window `(t0, t1)` of the estimate, `None` if refused.

@@ -6,6 +6,8 @@
 //! that cycle for dev-dependencies, and the integration tests that use it
 //! link the same library it does.
 //!
+//! - [`censored`]: escape samples at the quantiles of a known survival
+//!   law, censored at a budget.
 //! - [`lanes`]: the tables, laws and starts the lane kernels are held to the
 //!   scalar path with (`spinball-lanes/tests/agreement.rs` and
 //!   `spinball-analysis/tests/lane_agreement.rs`), and the scalar reference
@@ -15,9 +17,11 @@
 //! - [`tables`]: independent descriptions of tables (signed distance) and
 //!   tables built from segments that several crates test on.
 
+pub mod censored;
 pub mod lanes;
 pub mod normal;
 pub mod tables;
 
+pub use censored::censored_quantiles;
 pub use normal::Normal;
 pub use tables::{mushroom, segment_sinai, signed_distance};

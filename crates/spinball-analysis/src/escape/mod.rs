@@ -19,6 +19,8 @@
 //! - [`AlgebraicTail`]: the exponent `β` of an algebraic tail
 //!   `P(t) ∝ t^{−β}` and a stated decision [`TailLaw`] between an
 //!   exponential and an algebraic tail;
+//! - [`EscapeLaw`]: the verdict of the drift check and the tail test,
+//!   whether the rate of a window may be quoted as the table's;
 //! - [`KacPrediction`]: the mean escape time the invariant measure predicts
 //!   for a small hole (Kac's lemma), in collisions and in time, for any α;
 //! - [`EscapeSummary`]: all of the above for the records of a run
@@ -37,12 +39,14 @@
 //!   was at risk at `t`), the usual Kaplan–Meier convention.
 
 mod algebraic_tail;
+mod escape_law;
 mod escape_rate;
 mod kac;
 mod summary;
 mod survival;
 
 pub use algebraic_tail::{AlgebraicTail, DECISION_Z, TailLaw, TailWindow};
+pub use escape_law::{DRIFT_Z, EscapeLaw};
 pub use escape_rate::{EscapeRate, MIN_EVENTS, RateWindow};
 pub use kac::{KacPrediction, KacRatio};
 pub use summary::{ClockSummary, EscapeOptions, EscapeSummary};

@@ -8,7 +8,8 @@
 
 use std::fmt;
 
-use super::{Displacements, Horizon, TransportError};
+use super::ballistic::ballistic_balls;
+use super::{Ballistic, Displacements, Horizon, TransportError};
 use crate::estimators::{Accumulator, LinearFit, PlusMinus};
 
 /// The fewest checkpoints a fit window must hold.
@@ -90,22 +91,27 @@ pub enum Diffusion {
     /// (`⟨Δr²⟩/(4 t ln t) → D_m`). Its value depends on the time unit at
     /// finite `t` (corrections are of relative order `1/ln t`).
     Marginal(DiffusionFit),
+    /// Finite horizon, but some balls travel ballistically through the
+    /// lattice ([`Ballistic`]): `⟨Δr²⟩` grows like `t²` and there is no
+    /// finite `D`. The fit over all balls is kept for inspection only.
+    Ballistic(DiffusionFit, Ballistic),
 }
 
 impl Diffusion {
     /// The fit, whichever the law.
     pub fn fit(&self) -> DiffusionFit {
         match *self {
-            Diffusion::Normal(f) | Diffusion::Marginal(f) => f,
+            Diffusion::Normal(f) | Diffusion::Marginal(f) | Diffusion::Ballistic(f, _) => f,
         }
     }
 
-    /// `D` if the diffusion is normal, `None` if it is marginal.
+    /// `D` if the diffusion is normal, `None` if it is marginal or
+    /// ballistic.
     #[must_use]
     pub fn finite_d(&self) -> Option<PlusMinus> {
         match *self {
             Diffusion::Normal(f) => Some(PlusMinus::new(f.coefficient, f.sem)),
-            Diffusion::Marginal(_) => None,
+            Diffusion::Marginal(_) | Diffusion::Ballistic(..) => None,
         }
     }
 }
@@ -120,6 +126,11 @@ impl fmt::Display for Diffusion {
             Diffusion::Marginal(_) => write!(
                 f,
                 "marginal (infinite horizon, no finite D): ⟨Δr²⟩/(4 t ln t) → D_m = {value} on [{t0}, {t1}]"
+            ),
+            Diffusion::Ballistic(_, b) => write!(
+                f,
+                "ballistic (no finite D): {} of {} balls fly straight through the lattice on [{t0}, {t1}], the fastest (ball {}) at {:.4} per unit time",
+                b.balls, fit.n_ics, b.fastest, b.speed
             ),
         }
     }
@@ -167,7 +178,7 @@ fn fit_window(
 ) -> Result<(Diffusion, Vec<f64>), TransportError> {
     let range = window.indices(d.times())?;
     let points = range.len();
-    let slopes = per_ic_slopes(d, range, regressor(horizon));
+    let slopes = per_ic_slopes(d, range.clone(), regressor(horizon));
     let (coefficient, sem) = mean_sem(&slopes);
     let fit = DiffusionFit {
         coefficient,
@@ -177,7 +188,10 @@ fn fit_window(
         n_ics: d.n_ics(),
     };
     let out = match horizon {
-        Horizon::Finite => Diffusion::Normal(fit),
+        Horizon::Finite => match ballistic_balls(d, range) {
+            Some(b) => Diffusion::Ballistic(fit, b),
+            None => Diffusion::Normal(fit),
+        },
         Horizon::Infinite => Diffusion::Marginal(fit),
     };
     Ok((out, slopes))

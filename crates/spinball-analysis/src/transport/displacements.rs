@@ -66,6 +66,16 @@ impl<'a> Displacements<'a> {
         self.dr.len() / self.times.len()
     }
 
+    /// How far IC `ic` moved between checkpoints `j0` and `j1`:
+    /// `Δr(t_j1) − Δr(t_j0)`.
+    #[must_use]
+    #[inline]
+    pub fn increment(&self, ic: usize, j0: usize, j1: usize) -> [f64; 2] {
+        let m = self.times.len();
+        let (a, b) = (self.dr[ic * m + j0], self.dr[ic * m + j1]);
+        [b[0] - a[0], b[1] - a[1]]
+    }
+
     /// `|Δr|²` of IC `ic` at checkpoint `j`.
     #[must_use]
     #[inline]

@@ -17,24 +17,28 @@
 //!   over a stated [`FitWindow`], with its error from the per-IC
 //!   statistics: a [`Diffusion::Normal`] `D` for a [`Horizon::Finite`]
 //!   table, a [`Diffusion::Marginal`] coefficient of `t ln t` growth for
-//!   [`Horizon::Infinite`] (never a finite `D` that is not one);
+//!   [`Horizon::Infinite`], and [`Diffusion::Ballistic`] when a
+//!   finite-horizon ensemble holds balls that fly straight through the
+//!   lattice ([`Ballistic`]): never a finite `D` that is not one;
 //! - [`WindowScan`]: the estimate over successive windows (each twice as
 //!   late as the one before) and its trend in `ln t`, the diagnostic of
 //!   normal against marginal growth;
-//! - [`horizon_of`]: the horizon of a periodic table, where it is known
-//!   (refused, never guessed, where it is not);
+//! - [`horizon_of`]: the horizon of a periodic table, decided by the
+//!   geometry (refused, never guessed, where it cannot be);
 //! - [`DiffusionSummary`]: all of the above for the records of a run
 //!   ([`DisplacementRecord`](crate::open::DisplacementRecord)s): what the
 //!   command line, Python and the examples report.
 //!
 //! The definitions, estimators and their errors are in `docs/TRANSPORT.md`.
 
+mod ballistic;
 mod diffusion;
 mod displacements;
 mod horizon;
 mod summary;
 mod table_horizon;
 
+pub use ballistic::{BALLISTIC_EXCESS, Ballistic, STRAIGHTNESS};
 pub use diffusion::{
     Diffusion, DiffusionFit, FitWindow, MIN_POINTS, Trend, WindowScan, diffusion, window_scan,
 };
@@ -101,7 +105,7 @@ pub enum TransportError {
     NotPeriodic,
     /// A periodic table whose horizon is not known.
     #[error(
-        "the horizon of this periodic table is not known (it is known for the Lorentz gases, `lorentz:lattice=…,w=…,R=…`): without it no diffusion coefficient is reported"
+        "the horizon of this periodic table cannot be decided (a table without a shape, or one the geometry's horizon detection refuses): without it no diffusion coefficient is reported"
     )]
     UnknownHorizon,
     /// A window that is not a finite interval.

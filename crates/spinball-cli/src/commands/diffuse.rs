@@ -17,7 +17,7 @@ use crate::stdout::print;
 /// The arguments of `spinball diffuse`.
 #[derive(Debug, Clone, Args)]
 #[command(
-    after_help = "Tables: the cell of a Lorentz gas, `lorentz:lattice=triangular,w=1,R=0.45` (finite horizon for R >= √3·w/4) or `lorentz:lattice=square,w=1,R=0.4` (infinite horizon: the marginal coefficient of t ln t growth is reported, no finite D). A table file with `periodic` walls is refused until its horizon can be decided.\n\nOutputs: `--json` is a `spinball.diffusion` document (the summary and every IC's displacements); `--csv` has `index,t,dx,dy` per IC and checkpoint; `--npy` is (ICs, checkpoints, 2) float64, the displacements."
+    after_help = "Tables: the cell of a Lorentz gas, `lorentz:lattice=triangular,w=1,R=0.45` (finite horizon for R >= √3·w/4) or `lorentz:lattice=square,w=1,R=0.4` (infinite horizon: the marginal coefficient of t ln t growth is reported, no finite D). A table file with `periodic` walls works too: the geometry decides its horizon.\n\nOutputs: `--json` is a `spinball.diffusion` document (the summary and every IC's displacements); `--csv` has `index,t,dx,dy` per IC and checkpoint; `--npy` is (ICs, checkpoints, 2) float64, the displacements."
 )]
 pub struct DiffuseArgs {
     #[command(flatten)]
