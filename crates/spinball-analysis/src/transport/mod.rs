@@ -31,7 +31,7 @@ mod diffusion;
 mod displacements;
 mod horizon;
 
-pub use ballistic::{BALLISTIC_EXCESS, Ballistic, STRAIGHTNESS};
+pub use ballistic::{Ballistic, MAX_RESIDUAL, MIN_INCREMENTS};
 pub use diffusion::{
     Diffusion, DiffusionFit, FitWindow, MIN_POINTS, Trend, WindowScan, diffusion, window_scan,
 };
