@@ -42,8 +42,8 @@ use std::process::ExitCode;
 use serde_json::json;
 use spinball_analysis::estimators::Method;
 use spinball_analysis::precision::{
-    Budget, EstimatorComparison, EstimatorKind, Planner, Reference, compare_estimators,
-    variance_decay, work_precision,
+    Budget, EstimatorComparison, Planner, Reference, compare_estimators, variance_decay,
+    work_precision,
 };
 use spinball_analysis::run::Engine;
 use spinball_core::SpinLaw;
@@ -248,7 +248,7 @@ fn main() -> ExitCode {
                     ml_pilot_ics,
                     seeds.clone(),
                 )?;
-                print_comparison(&name, &cmp);
+                println!("{name} {cmp}");
                 estimator_rows(&mut ml_csv, spec, alpha, &cmp);
                 comparisons.push(cmp);
             }
@@ -312,40 +312,4 @@ fn main() -> ExitCode {
         report.json(&format!("{NAME}.json"), &doc)?;
         Ok(())
     })
-}
-
-/// One line per estimator of a comparison: medians of its repeats.
-fn print_comparison(name: &str, c: &EstimatorComparison) {
-    println!(
-        "{name} target {:.2}%: planner {} (its choice {:.2} s processor time)",
-        100.0 * c.target_rel,
-        c.choice,
-        c.choice_cpu_s
-    );
-    for kind in [EstimatorKind::Plain, EstimatorKind::Multilevel] {
-        let runs = match kind {
-            EstimatorKind::Plain => &c.plain,
-            EstimatorKind::Multilevel => &c.multilevel,
-        };
-        let Some(first) = runs.first() else { continue };
-        println!(
-            "  {:<10} T = {:>7}, ICs {:>9} (first), processor {:8.2} s (at target {:8.2} s), wall {:7.2} s (first), stated {:.3}%, pull {:+.2} (medians of {})",
-            kind.name(),
-            first.collisions,
-            first.ics,
-            c.median_cpu(kind),
-            c.median_cpu_at_target(kind),
-            first.wall_s,
-            100.0 * c.median_rel_total(kind),
-            c.median_pull(kind),
-            runs.len()
-        );
-    }
-    if !c.multilevel.is_empty() {
-        println!(
-            "  plain/multilevel at equal stated error {:.2}; following the planner costs {:.2}× plain",
-            c.speedup(),
-            c.planner_overhead()
-        );
-    }
 }

@@ -8,6 +8,7 @@
 //! Documented in the group docs (`precision/mod.rs`), section "Multilevel
 //! ensembles".
 
+use std::fmt;
 use std::ops::Range;
 use std::time::Instant;
 
@@ -470,5 +471,95 @@ impl EstimatorComparison {
             multilevel_cpu_s: multilevel_ic_steps * per_step(EstimatorKind::Multilevel),
             plain_cpu_s: plain_ic_steps * per_step(EstimatorKind::Plain),
         })
+    }
+}
+
+/// One line for the choice, one per estimator (medians of the repeats),
+/// one for the speed-up.
+impl fmt::Display for EstimatorComparison {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(
+            f,
+            "target {:.2}%: planner {} (its choice {:.2} s processor time)",
+            100.0 * self.target_rel,
+            self.choice,
+            self.choice_cpu_s
+        )?;
+        for kind in [EstimatorKind::Plain, EstimatorKind::Multilevel] {
+            let runs = self.runs(kind);
+            let Some(first) = runs.first() else { continue };
+            writeln!(
+                f,
+                "  {:<10} T = {:>7}, ICs {:>9} (first), processor {:8.2} s (at target {:8.2} s), wall {:7.2} s (first), stated {:.3}%, pull {:+.2} (medians of {})",
+                kind.name(),
+                first.collisions,
+                first.ics,
+                self.median_cpu(kind),
+                self.median_cpu_at_target(kind),
+                first.wall_s,
+                100.0 * self.median_rel_total(kind),
+                self.median_pull(kind),
+                runs.len()
+            )?;
+        }
+        if self.multilevel.is_empty() {
+            write!(
+                f,
+                "  no multilevel run (the plain run is too short for four levels)"
+            )
+        } else {
+            write!(
+                f,
+                "  plain/multilevel at equal stated error {:.2}; following the planner costs {:.2}x plain",
+                self.speedup(),
+                self.planner_overhead()
+            )
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn level(collisions: u64, variance: f64) -> LevelStats {
+        LevelStats {
+            level: 0,
+            collisions,
+            n_ics: 100,
+            mean: 0.0,
+            variance,
+            cost: collisions as f64,
+            wall_time_s: 0.0,
+        }
+    }
+
+    /// `V_l = T_l^−β` exactly gives back `β`; level 0 (the spread of the
+    /// exponents, not a correction) is left out; one correction is too
+    /// few.
+    #[test]
+    fn variance_decay_reads_the_exponent() {
+        for beta in [0.5, 1.0] {
+            let mut levels = vec![level(100, 7.0)];
+            levels.extend([400, 1600, 6400].map(|t| level(t, (t as f64).powf(-beta))));
+            let b = variance_decay(&levels).unwrap();
+            assert!((b - beta).abs() < 1e-12, "{b} vs {beta}");
+        }
+        assert_eq!(variance_decay(&[level(100, 1.0), level(400, 0.1)]), None);
+    }
+
+    #[test]
+    fn median_of_odd_even_and_none() {
+        assert_eq!(median(vec![3.0, 1.0, 2.0]), 2.0);
+        assert_eq!(median(vec![4.0, 1.0, 2.0, 3.0]), 2.5);
+        assert!(median(Vec::new()).is_nan());
+    }
+
+    #[test]
+    fn processor_time_is_read_on_linux() {
+        if cfg!(target_os = "linux") {
+            let t = process_cpu_seconds().expect("/proc/self/stat");
+            assert!(t >= 0.0 && t.is_finite());
+        }
     }
 }
