@@ -4,7 +4,7 @@
 //!
 //! ```text
 //! cargo run --release --example multilevel -- [--quick] [--target 1e-3]
-//!     [--repeat N] [--threads N] [--seed S]
+//!     [--repeat N] [--threads N] [--seed S] [--scene K]
 //! ```
 //!
 //! For each scene (stadium a = 1 at α = 0.5 and 0, Sinai L = 2, R = 1 at
@@ -17,7 +17,8 @@
 //! error), timed in processor seconds; it prints the medians, the pulls
 //! against the references and the speed-up at equal stated error. The
 //! `work_precision` example runs the same comparison at several targets
-//! for the chart of docs/ACCURACY.md. `--quick` (CI): target 1%, small
+//! for the chart of docs/ACCURACY.md. `--scene K` runs only scene `K`
+//! (0, 1, 2 in the order above). `--quick` (CI): target 1%, small
 //! pilots, one repeat, a second or two.
 //!
 //! `--draw-cost` measures instead what one draw of the top level costs on
@@ -51,6 +52,7 @@ struct Options {
     threads: Threads,
     seed: u64,
     draw_cost: bool,
+    scene: Option<usize>,
 }
 
 fn options() -> Result<Options, String> {
@@ -61,6 +63,7 @@ fn options() -> Result<Options, String> {
         threads: Threads::All,
         seed: 2030,
         draw_cost: false,
+        scene: None,
     };
     let mut explicit_repeat = false;
     let mut args = std::env::args().skip(1);
@@ -79,6 +82,13 @@ fn options() -> Result<Options, String> {
                 o.repeat = value("--repeat")?
                     .parse()
                     .map_err(|e| format!("--repeat: {e}"))?
+            }
+            "--scene" => {
+                o.scene = Some(
+                    value("--scene")?
+                        .parse()
+                        .map_err(|e| format!("--scene: {e}"))?,
+                );
             }
             "--seed" => {
                 o.seed = value("--seed")?
@@ -188,7 +198,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         100.0 * o.target,
         o.repeat
     );
-    for (spec, alpha, lref, lref_sem) in SCENES {
+    for (k, (spec, alpha, lref, lref_sem)) in SCENES.into_iter().enumerate() {
+        if o.scene.is_some_and(|s| s != k) {
+            continue;
+        }
         let table: Table = spec.parse()?;
         let scene = Ensemble::new(table, SpinLaw::new(alpha)?)
             .with_method(Method::Tangent)

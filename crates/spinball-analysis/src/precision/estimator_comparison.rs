@@ -14,7 +14,7 @@ use std::time::Instant;
 
 use spinball_geometry::Boundary;
 
-use super::ensemble_levels::EnsembleLevels;
+use super::ensemble_levels::{EnsembleLevels, default_levels};
 use super::estimator_choice::{EstimatorKind, EstimatorPlan};
 use super::measurement::Measurement;
 use super::multilevel::LevelStats;
@@ -186,6 +186,18 @@ pub fn compare_estimators<B: Boundary + Clone + Sync>(
     let (choice, choice_cpu_s, _) =
         timed(|| planner.plan_estimator(scene, target_rel, ml_pilot_ics));
     let choice = choice?;
+    // Where the planner did not pilot the levels (they alone would cost
+    // more than the plain run), plan them anyway: the comparison measures
+    // what multilevel would have cost.
+    let ml_plan = match &choice.multilevel {
+        Some(plan) => Some(plan.clone()),
+        None => match default_levels(choice.plain.collisions) {
+            Some(levels) => {
+                Some(planner.plan_multilevel(scene, &choice.plain, levels, ml_pilot_ics)?)
+            }
+            None => None,
+        },
+    };
     let deviation = |value: f64, total: f64| {
         Measurement::new(value - reference.value, total.hypot(reference.sem))
     };
@@ -195,7 +207,7 @@ pub fn compare_estimators<B: Boundary + Clone + Sync>(
     for (r, seed) in seeds.enumerate() {
         let seeded = scene.clone().with_seed(seed);
         let mut run_multilevel = |top: &mut u64, bias: &mut f64| -> Result<(), AnalysisError> {
-            let Some(plan) = &choice.multilevel else {
+            let Some(plan) = &ml_plan else {
                 return Ok(());
             };
             let scene = seeded
@@ -407,7 +419,8 @@ impl EstimatorComparison {
 
     /// What following the planner costs against running plain directly:
     /// the choice's processor time plus the chosen estimator's median
-    /// time at the target, over plain's median time at the target.
+    /// time at the target, over plain's median time at the target. NaN
+    /// where both are below the processor clock's resolution (10 ms).
     #[must_use]
     pub fn planner_overhead(&self) -> f64 {
         let chosen = self.median_cpu_at_target(self.choice.kind);
