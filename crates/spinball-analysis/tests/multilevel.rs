@@ -13,7 +13,7 @@ use spinball_analysis::estimators::Method;
 use spinball_analysis::precision::{
     EnsembleLevels, EstimatorKind, LevelDraw, LevelSamples, LevelShard, LevelSource,
     MULTILEVEL_MARGIN, Measurement, Multilevel, MultilevelEstimate, Planner, compare_estimators,
-    level_seed, variance_decay,
+    default_levels, level_seed, variance_decay,
 };
 use spinball_analysis::run::{Engine, Ensemble, Shard, Threads};
 use spinball_core::SpinLaw;
@@ -343,7 +343,9 @@ fn bad_settings_are_refused() {
 /// The planner's choice follows its own predictions (multilevel only if
 /// predicted at most `MULTILEVEL_MARGIN` of the plain work) and says why;
 /// at α = 0 (uniformly chaotic: the spread falls like `1/T`, so the
-/// corrections are as wide as the runs) it picks plain. The multilevel
+/// corrections are as wide as the runs) it picks plain, without the level
+/// pilots where they alone would cost more than that margin of the plain
+/// run. The multilevel
 /// plan, run adaptively, comes within twice its target (the bias the
 /// multilevel fit finds at the top level can exceed the pilot's; the result
 /// then says the target is not met).
@@ -382,6 +384,13 @@ fn planner_chooses_by_predicted_cost() {
     let choice = planner.plan_estimator(&scene, 0.005, 64).unwrap();
     println!("α = 0: {choice}");
     assert_eq!(choice.kind, EstimatorKind::Plain, "{choice}");
+    // The level pilots are run only where they alone cost less than the
+    // margin of the plain run (a multilevel run costs at least them).
+    let levels = default_levels(choice.plain.collisions).unwrap();
+    let pilot_work = 64.0 * levels.iter().sum::<u64>() as f64;
+    let skip = pilot_work > MULTILEVEL_MARGIN * choice.plain.predicted_ic_steps as f64;
+    assert_eq!(choice.multilevel.is_none(), skip, "{choice}");
+    assert_eq!(choice.reason.contains("pilots alone"), skip, "{choice}");
 }
 
 /// Plain against multilevel on the stadium at α = 0.5 toward a 1% total
