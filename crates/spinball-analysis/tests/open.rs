@@ -212,3 +212,91 @@ fn the_lane_engine_refuses_open_tables() {
         ));
     }
 }
+
+#[test]
+fn escape_records_are_bitwise_the_same_on_both_engines() {
+    let tables = [
+        stadium_with_hole(),
+        SegmentTable::sinai_with_hole(1.0, 0.4, 3.0, 0.3).unwrap(),
+        SegmentTable::circle_with_hole(1.0, 0.3, 0.4).unwrap(),
+    ];
+    for table in tables {
+        for alpha in [0.0, 0.4, 1.0] {
+            let law = SpinLaw::new(alpha).unwrap();
+            let ensemble = OpenEnsemble::new(Billiard::new(table.clone(), law))
+                .with_seed(3)
+                .with_indices(0..150);
+            assert_eq!(ensemble.engine_used(), Engine::Lanes);
+            let scalar = ensemble.clone().with_engine(Engine::Scalar);
+            assert_eq!(scalar.engine_used(), Engine::Scalar);
+            for budget in [
+                Budget::collisions(200),
+                Budget::time(30.0),
+                Budget {
+                    collisions: 100,
+                    time: 20.0,
+                },
+            ] {
+                let what = format!(
+                    "{}, α = {alpha}, {budget:?}",
+                    table.name().unwrap_or("table")
+                );
+                let reference = scalar.escape_times(budget).unwrap();
+                let lanes = ensemble
+                    .clone()
+                    .with_threads(Threads::Fixed(1))
+                    .escape_times(budget)
+                    .unwrap();
+                // `==` on the records, and their times by their bits.
+                assert_eq!(lanes, reference, "{what}");
+                assert!(
+                    lanes
+                        .iter()
+                        .zip(&reference)
+                        .all(|(a, b)| a.time.to_bits() == b.time.to_bits()),
+                    "{what}"
+                );
+                let censored = reference.iter().filter(|r| r.censored).count();
+                assert!(censored > 0 && censored < 150, "{what}: {censored}");
+                let two = ensemble
+                    .clone()
+                    .with_threads(Threads::Fixed(2))
+                    .escape_times(budget)
+                    .unwrap();
+                assert_eq!(two, reference, "{what}, 2 threads");
+                let mut shards = Vec::new();
+                for k in 0..2 {
+                    let shard = Shard::new(k, 2).unwrap();
+                    shards.extend(
+                        ensemble
+                            .clone()
+                            .with_shard(shard)
+                            .escape_times(budget)
+                            .unwrap(),
+                    );
+                }
+                assert_eq!(shards, reference, "{what}, 2 shards");
+            }
+        }
+    }
+}
+
+#[test]
+fn escape_runs_on_the_scalar_engine_where_the_lanes_cannot() {
+    let law = SpinLaw::new(0.4).unwrap();
+    // A built-in table (no holes) and a periodic table have no escape
+    // lane form: the scalar engine runs them, whatever is asked.
+    let stadium = OpenEnsemble::new(Billiard::new(
+        spinball_geometry::Stadium::new(1.0).unwrap(),
+        law,
+    ));
+    assert_eq!(stadium.engine_used(), Engine::Scalar);
+    let gas = OpenEnsemble::new(Billiard::new(
+        LorentzGas::square(1.0, 0.3).unwrap().table().unwrap(),
+        law,
+    ))
+    .with_indices(0..5);
+    assert_eq!(gas.engine_used(), Engine::Scalar);
+    let records = gas.escape_times(Budget::collisions(50)).unwrap();
+    assert!(records.iter().all(|r| r.censored && r.collisions == 50));
+}

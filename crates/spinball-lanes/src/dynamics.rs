@@ -379,6 +379,19 @@ impl<L: Lanes> ZeroRun<L> {
             .or(self.run.gt(L::splat(cpu, f64::from(MAX_ZERO_TIME_RUN))));
     }
 
+    /// Count a collision that took `time` in the lanes of `live` only (the
+    /// others' runs are held).
+    #[inline(always)]
+    pub fn watch_where(&mut self, time: L, live: L::Mask) {
+        let cpu = time.proof();
+        let zero = L::splat(cpu, 0.0);
+        let run = L::select(time.eq(zero), self.run + 1.0, zero);
+        self.run = L::select(live, run, self.run);
+        self.stuck = self
+            .stuck
+            .or(self.run.gt(L::splat(cpu, f64::from(MAX_ZERO_TIME_RUN))));
+    }
+
     /// Lanes that never got stuck.
     #[inline(always)]
     pub fn moving(&self) -> L::Mask {

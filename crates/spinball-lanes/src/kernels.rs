@@ -1,5 +1,6 @@
-//! The four kernels: plain trajectory, finite-difference Benettin, exact
-//! tangent, exact spectrum. Each runs `N` initial conditions in lockstep.
+//! The kernels: plain trajectory, finite-difference Benettin, exact
+//! tangent, exact spectrum, and escape from a table with holes (in
+//! [`escape`]). Each runs `N` initial conditions in lockstep.
 //!
 //! A kernel loads `L::N` initial conditions into structure-of-arrays [`Lanes`],
 //! runs all collisions with the state in registers, and writes `N` outcomes.
@@ -525,6 +526,10 @@ impl Kernel for Spectrum {
             && o.end.to_array().iter().all(|x| x.is_finite())
     }
 }
+
+mod escape;
+
+pub(crate) use escape::{Ended, Escape};
 
 #[cfg(test)]
 mod tests;

@@ -88,8 +88,8 @@ mod lanes;
 mod outcome;
 mod paused;
 
-pub use billiard::{CHUNK, LaneBilliard, has_lane_form};
+pub use billiard::{CHUNK, LaneBilliard, has_escape_lane_form, has_lane_form};
 pub use error::LanesError;
 pub use isa::{Isa, IsaError};
-pub use outcome::{Flight, SpectrumStretch, Stretch};
+pub use outcome::{Escape, Flight, SpectrumStretch, Stretch};
 pub use paused::Paused;
