@@ -221,6 +221,8 @@ fn escape_records_are_bitwise_the_same_on_both_engines() {
         SegmentTable::circle_with_hole(1.0, 0.3, 0.4).unwrap(),
     ];
     for table in tables {
+        // Censored and escaped records compared, on each table.
+        let mut counts = [0; 2];
         for alpha in [0.0, 0.4, 1.0] {
             let law = SpinLaw::new(alpha).unwrap();
             let ensemble = OpenEnsemble::new(Billiard::new(table.clone(), law))
@@ -257,7 +259,8 @@ fn escape_records_are_bitwise_the_same_on_both_engines() {
                     "{what}"
                 );
                 let censored = reference.iter().filter(|r| r.censored).count();
-                assert!(censored > 0 && censored < 150, "{what}: {censored}");
+                counts[0] += censored;
+                counts[1] += reference.len() - censored;
                 let two = ensemble
                     .clone()
                     .with_threads(Threads::Fixed(2))
@@ -278,6 +281,7 @@ fn escape_records_are_bitwise_the_same_on_both_engines() {
                 assert_eq!(shards, reference, "{what}, 2 shards");
             }
         }
+        assert!(counts[0] > 50 && counts[1] > 50, "{:?}: {counts:?}", table.name());
     }
 }
 

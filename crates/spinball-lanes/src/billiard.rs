@@ -443,8 +443,9 @@ impl<B: Boundary> LaneBilliard<B> {
     /// until an escape or the budget (as `spinball-analysis`'s
     /// `OpenEnsemble::escape_times`): the same escape time, collision count
     /// and exit (the ball's last flight to the hole is replayed by
-    /// `Billiard::advance` itself). A chunk of lanes runs until its last
-    /// ball ends; balls that end earlier idle in their lanes.
+    /// `Billiard::advance` itself). A lane whose ball ends takes the next
+    /// start, so the lanes stay busy however unequal the escape times;
+    /// collision budgets above `2⁵³` (never reached) count as unlimited.
     ///
     /// # Errors
     /// [`LanesError::InvalidOption`] for zero collisions or a time that is

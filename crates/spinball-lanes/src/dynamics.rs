@@ -368,6 +368,12 @@ impl<L: Lanes> ZeroRun<L> {
         self.run.lane(i)
     }
 
+    /// The current runs of zero-time collisions.
+    #[inline(always)]
+    pub fn runs(&self) -> L {
+        self.run
+    }
+
     /// Count a collision that took `time`.
     #[inline(always)]
     pub fn watch(&mut self, time: L) {
