@@ -281,7 +281,11 @@ fn escape_records_are_bitwise_the_same_on_both_engines() {
                 assert_eq!(shards, reference, "{what}, 2 shards");
             }
         }
-        assert!(counts[0] > 50 && counts[1] > 50, "{:?}: {counts:?}", table.name());
+        assert!(
+            counts[0] > 50 && counts[1] > 50,
+            "{:?}: {counts:?}",
+            table.name()
+        );
     }
 }
 
