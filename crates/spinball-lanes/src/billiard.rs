@@ -42,6 +42,9 @@ pub const CHUNK: usize = 96;
 /// on its own initial condition (not on the slice, the level, the lane count
 /// or the threads).
 ///
+/// A table with holes is taken by [`new_open`](Self::new_open), for
+/// [`escape_times`](Self::escape_times) only.
+///
 /// ```
 /// use spinball_core::{Billiard, SpinLaw, State};
 /// use spinball_geometry::{DVec2, Stadium};
@@ -89,7 +92,8 @@ struct Runner {
 
 /// Whether `table` can run in lanes: it has a [`Shape`] the kernels compile.
 /// Every built-in table and every closed `SegmentTable` can; a table with
-/// holes or periodic walls cannot (it runs on the scalar path).
+/// holes or periodic walls cannot (it runs on the scalar path; escape from
+/// holes runs in lanes, see [`has_escape_lane_form`]).
 #[must_use]
 pub fn has_lane_form<B: Boundary + ?Sized>(table: &B) -> bool {
     table.shape().is_some_and(|s| s.is_closed())
