@@ -2,7 +2,7 @@
 //! their censoring and reproducibility, and λ on the unfolded Sinai table.
 
 use spinball_analysis::estimators::Method;
-use spinball_analysis::open::{Budget, OpenEnsemble};
+use spinball_analysis::open::{Budget, EscapeRecord, OpenEnsemble};
 use spinball_analysis::run::{Engine, Ensemble, Shard, Threads};
 use spinball_core::{Billiard, SpinLaw};
 use spinball_geometry::{Boundary, LorentzGas, SegmentTable, Sinai};
@@ -10,6 +10,23 @@ use spinball_geometry::{Boundary, LorentzGas, SegmentTable, Sinai};
 fn stadium_with_hole() -> SegmentTable {
     // A hole of arc length 0.3 in the middle of the right cap.
     SegmentTable::stadium_with_hole(1.0, 2.0 + 0.5 * std::f64::consts::PI, 0.3).unwrap()
+}
+
+/// The records of `ensemble` run in `n` shards, concatenated in order.
+fn escapes_in_shards(
+    ensemble: &OpenEnsemble<SegmentTable>,
+    n: u64,
+    budget: Budget,
+) -> Vec<EscapeRecord> {
+    (0..n)
+        .flat_map(|k| {
+            ensemble
+                .clone()
+                .with_shard(Shard::new(k, n).unwrap())
+                .escape_times(budget)
+                .unwrap()
+        })
+        .collect()
 }
 
 #[test]
@@ -30,17 +47,7 @@ fn escape_records_are_bitwise_the_same_on_any_threads_and_shards() {
         .escape_times(budget)
         .unwrap();
     assert_eq!(one, two);
-    let mut shards = Vec::new();
-    for k in 0..3 {
-        let shard = Shard::new(k, 3).unwrap();
-        shards.extend(
-            ensemble
-                .clone()
-                .with_shard(shard)
-                .escape_times(budget)
-                .unwrap(),
-        );
-    }
+    let shards = escapes_in_shards(&ensemble, 3, budget);
     assert_eq!(one, shards);
     // One record per initial condition, in order; some escape, some are
     // censored (a hole of 0.3 in a perimeter of 4 + 2π: the mean escape
@@ -267,17 +274,7 @@ fn escape_records_are_bitwise_the_same_on_both_engines() {
                     .escape_times(budget)
                     .unwrap();
                 assert_eq!(two, reference, "{what}, 2 threads");
-                let mut shards = Vec::new();
-                for k in 0..2 {
-                    let shard = Shard::new(k, 2).unwrap();
-                    shards.extend(
-                        ensemble
-                            .clone()
-                            .with_shard(shard)
-                            .escape_times(budget)
-                            .unwrap(),
-                    );
-                }
+                let shards = escapes_in_shards(&ensemble, 2, budget);
                 assert_eq!(shards, reference, "{what}, 2 shards");
             }
         }
