@@ -4,19 +4,22 @@
 //!
 //! ```text
 //! cargo run --release --example multilevel -- [--quick] [--target 1e-3]
-//!     [--repeat N] [--threads N] [--seed S]
+//!     [--repeat N] [--threads N] [--seed S] [--scene K]
 //! ```
 //!
 //! For each scene (stadium a = 1 at α = 0.5 and 0, Sinai L = 2, R = 1 at
-//! α = 1; exact tangent dynamics in lanes) a pilot plans the plain run
-//! (`Planner::plan`) and the multilevel run of the same top length
-//! (`Planner::plan_estimator`); both are run `--repeat` times with seeds
-//! `S, S+1, …` (the plain run with its stop rule on total error, the
-//! multilevel run adaptively), and the medians are printed. To compare at
-//! **equal** error, each wall time is also scaled to the target, `t ·
-//! (error/target)²` (both estimators' work goes like `1/error²`), and the
-//! ratio plain/multilevel of those is the speed-up. `--quick` (CI): target
-//! 1%, small pilots, one repeat, a second or two.
+//! α = 1; exact tangent dynamics in lanes) a pilot plans, the planner
+//! chooses plain or multilevel, and `compare_estimators` runs both toward
+//! the target `--repeat` times with seeds `S, S+1, …` in alternating order
+//! (the multilevel run adaptively, lengthening its levels where its own
+//! bias fit finds the bias at the plain run's length above the target; the
+//! plain run at the same length and bias with its stop rule on total
+//! error), timed in processor seconds; it prints the medians, the pulls
+//! against the references and the speed-up at equal stated error. The
+//! `work_precision` example runs the same comparison at several targets
+//! for the chart of docs/ACCURACY.md. `--scene K` runs only scene `K`
+//! (0, 1, 2 in the order above). `--quick` (CI): target 1%, small
+//! pilots, one repeat, a second or two.
 //!
 //! `--draw-cost` measures instead what one draw of the top level costs on
 //! the lane engine (stadium a = 1, α = 0.5, levels up to 25 000
@@ -27,11 +30,11 @@
 //! medians of the process CPU time, and checks that both read the same
 //! numbers bitwise.
 
-use std::time::Instant;
-
-use spinball::analysis::AnalysisError;
 use spinball::analysis::estimators::Method;
-use spinball::analysis::precision::{EnsembleLevels, LevelSamples, Planner, default_levels};
+use spinball::analysis::precision::{
+    EnsembleLevels, LevelSamples, Measurement, Planner, compare_estimators, default_levels,
+    process_cpu_seconds,
+};
 use spinball::analysis::run::{Ensemble, Threads};
 use spinball::prelude::*;
 
@@ -49,6 +52,7 @@ struct Options {
     threads: Threads,
     seed: u64,
     draw_cost: bool,
+    scene: Option<usize>,
 }
 
 fn options() -> Result<Options, String> {
@@ -59,6 +63,7 @@ fn options() -> Result<Options, String> {
         threads: Threads::All,
         seed: 2030,
         draw_cost: false,
+        scene: None,
     };
     let mut explicit_repeat = false;
     let mut args = std::env::args().skip(1);
@@ -77,6 +82,13 @@ fn options() -> Result<Options, String> {
                 o.repeat = value("--repeat")?
                     .parse()
                     .map_err(|e| format!("--repeat: {e}"))?
+            }
+            "--scene" => {
+                o.scene = Some(
+                    value("--scene")?
+                        .parse()
+                        .map_err(|e| format!("--scene: {e}"))?,
+                );
             }
             "--seed" => {
                 o.seed = value("--seed")?
@@ -115,24 +127,6 @@ fn median(mut v: Vec<f64>) -> f64 {
     }
 }
 
-/// One run's wall time, stated total error (absolute) and value.
-struct Outcome {
-    wall: f64,
-    error: f64,
-    value: f64,
-}
-
-/// CPU seconds of this process so far (all threads; `/proc/self/stat`,
-/// clock ticks of 1/100 s). `None` off Linux.
-fn cpu_seconds() -> Option<f64> {
-    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
-    // Fields after the command name (which may hold spaces) in parentheses.
-    let rest = &stat[stat.rfind(')')? + 2..];
-    let f: Vec<&str> = rest.split(' ').collect();
-    let (utime, stime): (f64, f64) = (f.get(11)?.parse().ok()?, f.get(12)?.parse().ok()?);
-    Some((utime + stime) / 100.0)
-}
-
 /// `--draw-cost`: see the module docs.
 fn draw_cost(o: &Options) -> Result<(), Box<dyn std::error::Error>> {
     let n: u64 = if o.quick { 96 } else { 960 };
@@ -152,15 +146,23 @@ fn draw_cost(o: &Options) -> Result<(), Box<dyn std::error::Error>> {
         let seeded = scene.with_seed(source.level_seed(top));
         let (mut resumed, mut rerun) = (Vec::new(), Vec::new());
         for _ in 0..o.repeat {
-            let c = cpu_seconds();
+            let c = process_cpu_seconds();
             let draws = LevelSamples::run(&source, top, 0..n)?.draws;
-            resumed.push(cpu_seconds().zip(c).map_or(f64::NAN, |(b, a)| b - a));
-            let c = cpu_seconds();
+            resumed.push(
+                process_cpu_seconds()
+                    .zip(c)
+                    .map_or(f64::NAN, |(b, a)| b - a),
+            );
+            let c = process_cpu_seconds();
             let runs = reads
                 .iter()
                 .map(|&t| seeded.clone().with_collisions(t).trajectories(0..n))
                 .collect::<Result<Vec<_>, _>>()?;
-            rerun.push(cpu_seconds().zip(c).map_or(f64::NAN, |(b, a)| b - a));
+            rerun.push(
+                process_cpu_seconds()
+                    .zip(c)
+                    .map_or(f64::NAN, |(b, a)| b - a),
+            );
             for (i, d) in draws.iter().enumerate() {
                 let same = [d.short, d.coarse, d.fine]
                     .iter()
@@ -192,101 +194,34 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         (256, vec![1_000, 2_000, 4_000, 8_000], 64)
     };
     println!(
-        "target {:.2}% total error, {} repeat(s), medians; wall times scaled to the target as t·(error/target)²",
+        "target {:.2}% total error, {} repeat(s), medians of processor time; times at target scaled as t·(error/target)²",
         100.0 * o.target,
         o.repeat
     );
-    for (spec, alpha, lref, lref_sem) in SCENES {
+    for (k, (spec, alpha, lref, lref_sem)) in SCENES.into_iter().enumerate() {
+        if o.scene.is_some_and(|s| s != k) {
+            continue;
+        }
         let table: Table = spec.parse()?;
         let scene = Ensemble::new(table, SpinLaw::new(alpha)?)
             .with_method(Method::Tangent)
             .with_threads(o.threads)
             .with_seed(o.seed + 1000);
-        let start = Instant::now();
         let planner = Planner::pilot(
             &scene.clone().with_ics(pilot_ics),
             &[Method::Tangent],
             &pilot_t,
         )?;
-        let choice = planner.plan_estimator(&scene, o.target, ml_pilot)?;
-        let planning = start.elapsed().as_secs_f64();
-        println!("\n{spec} α = {alpha} (λ_ref {lref} ± {lref_sem}); planning {planning:.2} s");
-        println!("  planner: {choice}");
-        let plain_plan = choice.plain;
-        let (mut plain, mut multi) = (Vec::new(), Vec::new());
-        for r in 0..o.repeat {
-            let seeded = scene.clone().with_seed(o.seed + r);
-            let t = Instant::now();
-            let est = plain_plan
-                .ensemble(seeded.clone(), 4 * plain_plan.ics)
-                .run_until(&plain_plan.stop_rule(plain_plan.ics.div_ceil(8).max(64)))?;
-            let wall = t.elapsed().as_secs_f64();
-            let error = est.sem().hypot(plain_plan.bias);
-            plain.push(Outcome {
-                wall,
-                error,
-                value: est.mean(),
-            });
-            if let Some(ml) = &choice.multilevel {
-                let t = Instant::now();
-                // Where the levels' own bias fit finds the bias at the plain
-                // run's length above the target (the pilot saw only short
-                // runs), run the levels four times longer.
-                let e = match ml.estimator().run(&ml.source(seeded.clone())?) {
-                    Err(AnalysisError::TargetUnreachable { floor, .. }) => {
-                        let top = 4 * plain_plan.collisions;
-                        println!(
-                            "    multilevel: bias {floor:.2e} at T = {} above target; levels up to {top}",
-                            plain_plan.collisions
-                        );
-                        ml.estimator().run(&EnsembleLevels::up_to(
-                            seeded.with_method(Method::Tangent),
-                            top,
-                        )?)?
-                    }
-                    other => other?,
-                };
-                let wall = t.elapsed().as_secs_f64();
-                let l = e.lambda();
-                multi.push(Outcome {
-                    wall,
-                    error: e.budget.total.value,
-                    value: l.value,
-                });
-                if r == 0 {
-                    print!(
-                        "  multilevel, first repeat:\n    {}",
-                        e.to_string().replace('\n', "\n    ")
-                    );
-                    println!();
-                }
-            }
-        }
-        let report = |name: &str, runs: &[Outcome]| -> f64 {
-            let wall = median(runs.iter().map(|x| x.wall).collect());
-            let err = median(runs.iter().map(|x| x.error / lref).collect());
-            let dev = median(
-                runs.iter()
-                    .map(|x| (x.value - lref) / x.error.hypot(lref_sem))
-                    .collect(),
+        let reference = Measurement::new(lref, lref_sem);
+        let seeds = o.seed..o.seed + o.repeat;
+        let c = compare_estimators(&scene, &planner, reference, o.target, ml_pilot, seeds)?;
+        println!("\n{spec} α = {alpha} (λ_ref {lref} ± {lref_sem}) {c}");
+        if let Some(e) = &c.levels {
+            print!(
+                "  multilevel, first repeat:\n    {}",
+                e.to_string().replace('\n', "\n    ")
             );
-            let scaled = median(
-                runs.iter()
-                    .map(|x| x.wall * (x.error / lref / o.target).powi(2))
-                    .collect(),
-            );
-            println!(
-                "  {name:<10} wall {wall:8.3} s  stated total error {:.3}%  (λ_T − λ_ref)/(total ⊕ σ_ref) {dev:+.2}  wall at target {scaled:8.3} s",
-                100.0 * err
-            );
-            scaled
-        };
-        let p = report("plain", &plain);
-        if multi.is_empty() {
-            println!("  multilevel: no plan (the plain run is too short for four levels)");
-        } else {
-            let m = report("multilevel", &multi);
-            println!("  speed-up plain/multilevel at equal error: {:.2}", p / m);
+            println!();
         }
     }
     Ok(())

@@ -3,7 +3,7 @@
 //!
 //! ```text
 //! cargo run --release --example work_precision -- [--quick | --paper] [--out DIR]
-//!     [--threads N] [--seed S]
+//!     [--threads N] [--seed S] [--repeat N]
 //! ```
 //!
 //! | mode      | reference (tangent, ICs × checkpoints)   | budgets N × T                   |
@@ -19,21 +19,37 @@
 //! others tangent and δ0 = 1e-7 in lanes. The reference of a scene uses
 //! seed + 1, so errors are measured against an independent value.
 //!
+//! Plain against multilevel (`compare_estimators`): on the stadium a = 1
+//! at α = 0.5 and 0 and on Sinai L = 2, R = 1 at α = 1 (tangent, lanes),
+//! the planner chooses, then both estimators run toward each target
+//! (quick: 2%, 1%; otherwise 1%, 0.5%, 0.2%, 0.1%), `--repeat` times
+//! (default 3; quick 1) in alternating order on seeds `S + 10, …`, timed in
+//! processor seconds; the scene's reference above is the independent
+//! value. From the 0.1% runs the cost of 0.01% is predicted from the
+//! measured level variances and costs.
+//!
 //! Writes into `--out` (default `out/work_precision`): `work_precision.png`
 //! (error against wall time; bias against T; SEM against N; planned time to
-//! a target), `work_precision.csv` (one row per point) and
-//! `work_precision.json` (references, points, pilots, plans, the paper's
-//! sizes placed on the chart).
+//! a target; plain against multilevel, error against processor time; the
+//! multilevel correction variances against run length),
+//! `work_precision.csv` (one row per point), `multilevel.csv` (one row per
+//! estimator run) and `work_precision.json` (references, points, pilots,
+//! plans, the paper's sizes placed on the chart, the estimator
+//! comparisons and predictions).
 
 use std::process::ExitCode;
 
 use serde_json::json;
 use spinball_analysis::estimators::Method;
-use spinball_analysis::precision::{Budget, Planner, Reference, work_precision};
+use spinball_analysis::precision::{
+    Budget, EstimatorComparison, Planner, Reference, compare_estimators, variance_decay,
+    work_precision,
+};
 use spinball_analysis::run::Engine;
 use spinball_core::SpinLaw;
 use spinball_figures::{
-    Csv, WORK_COLUMNS, bias_vs_t, error_vs_time, method_label, run_figure, sem_vs_n, template,
+    Csv, ESTIMATOR_COLUMNS, WORK_COLUMNS, bias_vs_t, error_vs_time, estimator_curves,
+    estimator_rows, level_variances, method_label, run_figure_with, sem_vs_n, template,
     time_to_target, work_rows,
 };
 use spinball_plot::{Grid, Legend, LineKind, LinePlot, Series, palette};
@@ -51,13 +67,26 @@ const SCENES: [(&str, f64); 7] = [
 ];
 const DELTAS: [f64; 4] = [1e-5, 1e-7, 1e-9, 1e-11];
 const TARGETS: [f64; 3] = [1e-2, 1e-3, 1e-4];
+/// The scenes (indices into `SCENES`) of the plain against multilevel
+/// comparison: the two with spin of the targets, and α = 0 where
+/// multilevel does not pay.
+const ESTIMATOR_SCENES: [usize; 3] = [0, 5, 1];
+
+/// The example's own options.
+#[derive(clap::Args, Debug)]
+struct Options {
+    /// Repeats of each plain against multilevel comparison (medians);
+    /// default 3, 1 with --quick.
+    #[arg(long)]
+    repeat: Option<u64>,
+}
 
 fn log_plot(title: &str, x: &str, y: &str) -> LinePlot {
     LinePlot::with_axes(title, x, y).log_x(true).log_y(true)
 }
 
 fn main() -> ExitCode {
-    run_figure(NAME, ABOUT, |args, report| {
+    run_figure_with(NAME, ABOUT, |args, options: &Options, report| {
         let b = Budget::new;
         let budgets = args.pick(
             vec![b(16, 500), b(64, 1_000), b(256, 2_000)],
@@ -109,6 +138,7 @@ fn main() -> ExitCode {
             "predicted wall time (s)",
         );
         let mut scenes = Vec::new();
+        let mut references = Vec::new();
         for (k, &(spec, alpha)) in SCENES.iter().enumerate() {
             let scene = template(args, spec)?.with_law(SpinLaw::new(alpha)?);
             let name = format!("{spec} α={alpha}");
@@ -117,6 +147,7 @@ fn main() -> ExitCode {
                 &ref_t,
             )?;
             let lam = reference.value;
+            references.push(lam);
             println!(
                 "{name}: reference λ = {:.6} ± {:.1e} ({}, {:.2} s)",
                 lam.value,
@@ -175,21 +206,109 @@ fn main() -> ExitCode {
             }
             scenes.push(json!({"table": spec, "alpha": alpha, "reference": reference, "points": points, "pilots": planner.pilots, "plans": plans, "paper_sizes": paper}));
         }
+        let repeat = options.repeat.unwrap_or(args.pick(1, 3, 3)).max(1);
+        let targets = args.pick(
+            vec![2e-2, 1e-2],
+            vec![1e-2, 5e-3, 2e-3, 1e-3],
+            vec![1e-2, 5e-3, 2e-3, 1e-3],
+        );
+        let (ml_pilot_ics, smaller) = args.pick((16, 1e-3), (64, 1e-4), (64, 1e-4));
+        let mut versus = log_plot(
+            "Plain (solid) against multilevel (dashed), tangent, lanes",
+            "processor time (s)",
+            "stated total error / λ",
+        );
+        let mut variances = log_plot(
+            "Multilevel corrections: variance V_l of λ_Tl − λ_Tl−1",
+            "T_l (collisions)",
+            "V_l",
+        );
+        let mut ml_csv = Csv::new(&ESTIMATOR_COLUMNS);
+        let mut estimators = Vec::new();
+        for (c, &k) in ESTIMATOR_SCENES.iter().enumerate() {
+            let (spec, alpha) = SCENES[k];
+            let name = format!("{spec} α={alpha}");
+            let scene = template(args, spec)?
+                .with_law(SpinLaw::new(alpha)?)
+                .with_method(Method::Tangent)
+                .with_seed(args.seed + 3);
+            let planner = Planner::pilot(
+                &scene.clone().with_seed(args.seed + 2).with_ics(pilot_ics),
+                &[Method::Tangent],
+                &pilot_t,
+            )?;
+            let seeds = args.seed + 10..args.seed + 10 + repeat;
+            let mut comparisons: Vec<EstimatorComparison> = Vec::new();
+            for &target in &targets {
+                let cmp = compare_estimators(
+                    &scene,
+                    &planner,
+                    references[k],
+                    target,
+                    ml_pilot_ics,
+                    seeds.clone(),
+                )?;
+                println!("{name} {cmp}");
+                estimator_rows(&mut ml_csv, spec, alpha, &cmp);
+                comparisons.push(cmp);
+            }
+            let last = comparisons.last().expect("targets");
+            let prediction = last.predict(&planner, smaller);
+            if let Some(p) = &prediction {
+                println!(
+                    "{name} {:.3}% predicted (from the {:.2}% runs): T = {}, plain {:.3e} IC-steps {:.0} s, multilevel levels {:?} {:.3e} IC-steps {:.0} s (processor time), plain/multilevel {:.2}",
+                    100.0 * p.target_rel,
+                    100.0 * last.target_rel,
+                    p.collisions,
+                    p.plain_ic_steps,
+                    p.plain_cpu_s,
+                    p.levels,
+                    p.multilevel_ic_steps,
+                    p.multilevel_cpu_s,
+                    p.speedup()
+                );
+            }
+            if let Some(e) = &last.levels {
+                let v: Vec<String> = e
+                    .levels
+                    .iter()
+                    .map(|l| format!("T={} V={:.3e}", l.collisions, l.variance))
+                    .collect();
+                println!(
+                    "{name} level variances: {}; V_l ∝ T_l^-β, β = {:.2}",
+                    v.join(", "),
+                    variance_decay(&e.levels).unwrap_or(f64::NAN)
+                );
+                variances = variances.series(level_variances(&name, e).color(palette(c)));
+            }
+            versus = estimator_curves(versus, &name, palette(c), &comparisons);
+            estimators.push(json!({"table": spec, "alpha": alpha, "reference": references[k], "comparisons": comparisons, "prediction": prediction, "variance_decay": last.levels.as_ref().and_then(|e| variance_decay(&e.levels))}));
+        }
+        let inverse_t = |t: f64| (t, 0.5 / t);
+        variances = variances.series(
+            Series::new("∝ 1/T", [inverse_t(200.0), inverse_t(5e5)])
+                .line_only()
+                .kind(LineKind::Dashed)
+                .color(palette(7)),
+        );
         let guide = |n: f64| (n, 1.0 / n.sqrt());
         let guide = Series::new("∝ 1/√N", [guide(10.0), guide(1e5)]).line_only();
         sem_n = sem_n.series(guide.kind(LineKind::Dashed).color(palette(7)));
-        let grid = Grid::new(2, 2)
+        let grid = Grid::new(3, 2)
             .panel(wp.legend(Legend::LowerLeft))
             .panel(bias_t.legend(Legend::LowerLeft))
             .panel(sem_n.legend(Legend::LowerLeft))
-            .panel(to_target.legend(Legend::UpperRight));
+            .panel(to_target.legend(Legend::UpperRight))
+            .panel(versus.legend(Legend::UpperRight))
+            .panel(variances.legend(Legend::LowerLeft));
         report.png(
             &format!("{NAME}.png"),
             &grid,
-            args.pick((1400, 1100), (1800, 1400), (1800, 1400)),
+            args.pick((1400, 1600), (1800, 2100), (1800, 2100)),
         )?;
         report.csv(&format!("{NAME}.csv"), &csv)?;
-        let doc = json!({"mode": args.mode.to_string(), "seed": args.seed, "budgets": budgets, "scenes": scenes});
+        report.csv("multilevel.csv", &ml_csv)?;
+        let doc = json!({"mode": args.mode.to_string(), "seed": args.seed, "budgets": budgets, "scenes": scenes, "estimators": estimators});
         report.json(&format!("{NAME}.json"), &doc)?;
         Ok(())
     })

@@ -2,7 +2,7 @@
 //! their censoring and reproducibility, and λ on the unfolded Sinai table.
 
 use spinball_analysis::estimators::Method;
-use spinball_analysis::open::{Budget, OpenEnsemble};
+use spinball_analysis::open::{Budget, EscapeRecord, OpenEnsemble};
 use spinball_analysis::run::{Engine, Ensemble, Shard, Threads};
 use spinball_core::{Billiard, SpinLaw};
 use spinball_geometry::{Boundary, LorentzGas, SegmentTable, Sinai};
@@ -10,6 +10,23 @@ use spinball_geometry::{Boundary, LorentzGas, SegmentTable, Sinai};
 fn stadium_with_hole() -> SegmentTable {
     // A hole of arc length 0.3 in the middle of the right cap.
     SegmentTable::stadium_with_hole(1.0, 2.0 + 0.5 * std::f64::consts::PI, 0.3).unwrap()
+}
+
+/// The records of `ensemble` run in `n` shards, concatenated in order.
+fn escapes_in_shards(
+    ensemble: &OpenEnsemble<SegmentTable>,
+    n: u64,
+    budget: Budget,
+) -> Vec<EscapeRecord> {
+    (0..n)
+        .flat_map(|k| {
+            ensemble
+                .clone()
+                .with_shard(Shard::new(k, n).unwrap())
+                .escape_times(budget)
+                .unwrap()
+        })
+        .collect()
 }
 
 #[test]
@@ -30,17 +47,7 @@ fn escape_records_are_bitwise_the_same_on_any_threads_and_shards() {
         .escape_times(budget)
         .unwrap();
     assert_eq!(one, two);
-    let mut shards = Vec::new();
-    for k in 0..3 {
-        let shard = Shard::new(k, 3).unwrap();
-        shards.extend(
-            ensemble
-                .clone()
-                .with_shard(shard)
-                .escape_times(budget)
-                .unwrap(),
-        );
-    }
+    let shards = escapes_in_shards(&ensemble, 3, budget);
     assert_eq!(one, shards);
     // One record per initial condition, in order; some escape, some are
     // censored (a hole of 0.3 in a perimeter of 4 + 2π: the mean escape
@@ -211,4 +218,90 @@ fn the_lane_engine_refuses_open_tables() {
             Err(LanesError::OpenTable)
         ));
     }
+}
+
+#[test]
+fn escape_records_are_bitwise_the_same_on_both_engines() {
+    let tables = [
+        stadium_with_hole(),
+        SegmentTable::sinai_with_hole(1.0, 0.4, 3.0, 0.3).unwrap(),
+        SegmentTable::circle_with_hole(1.0, 0.3, 0.4).unwrap(),
+    ];
+    for table in tables {
+        // Censored and escaped records compared, on each table.
+        let mut counts = [0; 2];
+        for alpha in [0.0, 0.4, 1.0] {
+            let law = SpinLaw::new(alpha).unwrap();
+            let ensemble = OpenEnsemble::new(Billiard::new(table.clone(), law))
+                .with_seed(3)
+                .with_indices(0..150);
+            assert_eq!(ensemble.engine_used(), Engine::Lanes);
+            let scalar = ensemble.clone().with_engine(Engine::Scalar);
+            assert_eq!(scalar.engine_used(), Engine::Scalar);
+            for budget in [
+                Budget::collisions(200),
+                Budget::time(30.0),
+                Budget {
+                    collisions: 100,
+                    time: 20.0,
+                },
+            ] {
+                let what = format!(
+                    "{}, α = {alpha}, {budget:?}",
+                    table.name().unwrap_or("table")
+                );
+                let reference = scalar.escape_times(budget).unwrap();
+                let lanes = ensemble
+                    .clone()
+                    .with_threads(Threads::Fixed(1))
+                    .escape_times(budget)
+                    .unwrap();
+                // `==` on the records, and their times by their bits.
+                assert_eq!(lanes, reference, "{what}");
+                assert!(
+                    lanes
+                        .iter()
+                        .zip(&reference)
+                        .all(|(a, b)| a.time.to_bits() == b.time.to_bits()),
+                    "{what}"
+                );
+                let censored = reference.iter().filter(|r| r.censored).count();
+                counts[0] += censored;
+                counts[1] += reference.len() - censored;
+                let two = ensemble
+                    .clone()
+                    .with_threads(Threads::Fixed(2))
+                    .escape_times(budget)
+                    .unwrap();
+                assert_eq!(two, reference, "{what}, 2 threads");
+                let shards = escapes_in_shards(&ensemble, 2, budget);
+                assert_eq!(shards, reference, "{what}, 2 shards");
+            }
+        }
+        assert!(
+            counts[0] > 50 && counts[1] > 50,
+            "{:?}: {counts:?}",
+            table.name()
+        );
+    }
+}
+
+#[test]
+fn escape_runs_on_the_scalar_engine_where_the_lanes_cannot() {
+    let law = SpinLaw::new(0.4).unwrap();
+    // A built-in table (no holes) and a periodic table have no escape
+    // lane form: the scalar engine runs them, whatever is asked.
+    let stadium = OpenEnsemble::new(Billiard::new(
+        spinball_geometry::Stadium::new(1.0).unwrap(),
+        law,
+    ));
+    assert_eq!(stadium.engine_used(), Engine::Scalar);
+    let gas = OpenEnsemble::new(Billiard::new(
+        LorentzGas::square(1.0, 0.3).unwrap().table().unwrap(),
+        law,
+    ))
+    .with_indices(0..5);
+    assert_eq!(gas.engine_used(), Engine::Scalar);
+    let records = gas.escape_times(Budget::collisions(50)).unwrap();
+    assert!(records.iter().all(|r| r.censored && r.collisions == 50));
 }

@@ -136,5 +136,6 @@ pub use transport_figure::{
     window_scan_series,
 };
 pub use work_plots::{
-    WORK_COLUMNS, bias_vs_t, error_vs_time, method_label, sem_vs_n, time_to_target, work_rows,
+    ESTIMATOR_COLUMNS, WORK_COLUMNS, bias_vs_t, error_vs_time, estimator_curves, estimator_rows,
+    level_variances, method_label, sem_vs_n, time_to_target, work_rows,
 };

@@ -87,9 +87,23 @@ pub fn diffusion_series(label: &str, runs: &[DiffusionRun]) -> Series {
     )
 }
 
-/// `D(α)` of `runs` ([`diffusion_series`]) on a log axis.
+/// `D(α)` of `runs` ([`diffusion_series`]) on a log axis; the α whose
+/// balls fly ballistically (no finite `D`) are named in the title.
 #[must_use]
 pub fn diffusion_panel(title: &str, label: &str, runs: &[DiffusionRun]) -> LinePlot {
+    let ballistic: Vec<String> = runs
+        .iter()
+        .filter(|r| matches!(r.estimate, Diffusion::Ballistic(..)))
+        .map(|r| r.alpha.to_string())
+        .collect();
+    let title = if ballistic.is_empty() {
+        title.to_string()
+    } else {
+        format!(
+            "{title}; no D at α = {} (ballistic balls)",
+            ballistic.join(", ")
+        )
+    };
     LinePlot::with_axes(title, ALPHA_LABEL, "diffusion coefficient D")
         .log_y(true)
         .series(diffusion_series(label, runs).markers_only())

@@ -1,15 +1,19 @@
 //! Work–precision figures and tables: error against wall time per method
 //! and engine, finite-time bias against `T`, SEM against `N`, planned time
-//! to a target, and the CSV rows of a work–precision set (the
-//! `work_precision` example and docs/ACCURACY.md).
+//! to a target, plain against multilevel estimators, and the CSV rows of
+//! a work–precision set (the `work_precision` example and
+//! docs/ACCURACY.md).
 
 use spinball_analysis::estimators::Method;
-use spinball_analysis::precision::{Planner, Reference, WorkPoint};
+use spinball_analysis::precision::{
+    EstimatorComparison, EstimatorKind, EstimatorRun, MultilevelEstimate, Planner, Reference,
+    WorkPoint,
+};
 use spinball_analysis::run::Engine;
 
 use crate::csv::{Csv, optional};
 use spinball_plot::palette;
-use spinball_plot::{LineKind, LinePlot, Series};
+use spinball_plot::{LineKind, LinePlot, RGBColor, Series};
 
 /// `FD δ0=1e-7, lanes` or `tangent, scalar`.
 #[must_use]
@@ -142,4 +146,96 @@ pub fn time_to_target(mut plot: LinePlot, planner: &Planner, targets: &[f64]) ->
         plot = plot.series(Series::new(label, line).color(palette(i)));
     }
     plot
+}
+
+/// The columns of [`estimator_rows`].
+pub const ESTIMATOR_COLUMNS: [&str; 16] = [
+    "table",
+    "alpha",
+    "target",
+    "estimator",
+    "seed",
+    "collisions",
+    "ics",
+    "ic_steps",
+    "cpu_s",
+    "wall_s",
+    "mean",
+    "sem",
+    "total",
+    "deviation",
+    "deviation_sem",
+    "pull",
+];
+
+/// Append one row per run (plain, then multilevel) of `comparison` on the
+/// scene `table` at `alpha` to `csv` (made with [`ESTIMATOR_COLUMNS`]).
+pub fn estimator_rows(csv: &mut Csv, table: &str, alpha: f64, comparison: &EstimatorComparison) {
+    let runs = comparison.plain.iter().chain(&comparison.multilevel);
+    for r in runs {
+        csv.row(&[
+            &table,
+            &alpha,
+            &comparison.target_rel,
+            &r.kind.name(),
+            &r.seed,
+            &r.collisions,
+            &r.ics,
+            &r.ic_steps,
+            &r.cpu_s,
+            &r.wall_s,
+            &r.value.value,
+            &r.value.sem,
+            &r.total,
+            &r.deviation.value,
+            &r.deviation.sem,
+            &r.pull(),
+        ]);
+    }
+}
+
+/// `plot` with the plain (solid) and multilevel (dashed) curves of one
+/// scene in `color`: median stated relative total error against median
+/// processor time, one point per comparison (target).
+#[must_use]
+pub fn estimator_curves(
+    mut plot: LinePlot,
+    scene: &str,
+    color: RGBColor,
+    comparisons: &[EstimatorComparison],
+) -> LinePlot {
+    for (kind, line) in [
+        (EstimatorKind::Plain, LineKind::Solid),
+        (EstimatorKind::Multilevel, LineKind::Dashed),
+    ] {
+        let points: Vec<(f64, f64)> = comparisons
+            .iter()
+            .filter(|c| !runs_of(c, kind).is_empty())
+            .map(|c| (c.median_cpu(kind), c.median_rel_total(kind)))
+            .collect();
+        if !points.is_empty() {
+            let label = format!("{scene}, {}", kind.name());
+            plot = plot.series(Series::new(label, points).kind(line).color(color));
+        }
+    }
+    plot
+}
+
+fn runs_of(c: &EstimatorComparison, kind: EstimatorKind) -> &[EstimatorRun] {
+    match kind {
+        EstimatorKind::Plain => &c.plain,
+        EstimatorKind::Multilevel => &c.multilevel,
+    }
+}
+
+/// The correction variances `V_l` of a multilevel estimate against the
+/// run lengths `T_l` of its correction levels (`l ≥ 1`).
+#[must_use]
+pub fn level_variances(label: impl Into<String>, estimate: &MultilevelEstimate) -> Series {
+    let points = estimate
+        .levels
+        .iter()
+        .skip(1)
+        .map(|l| (l.collisions as f64, l.variance));
+    Series::new(label, points)
 }

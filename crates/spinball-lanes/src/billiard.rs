@@ -10,9 +10,9 @@
 
 use spinball_core::perturbation::check_delta0;
 use spinball_core::{
-    Billiard, MAX_QR_INTERVAL, Perturbation, SpinLaw, State, TangentVector, Units,
+    Ball, Billiard, Event, MAX_QR_INTERVAL, Perturbation, SpinLaw, State, TangentVector, Units,
 };
-use spinball_geometry::{Boundary, SegmentTable, Shape, Table};
+use spinball_geometry::{Boundary, SegmentTable, Shape, Table, WallKind};
 
 use crate::dispatch::Dispatch;
 use crate::dynamics::Law;
@@ -20,7 +20,7 @@ use crate::error::LanesError;
 use crate::geom::{Geom, LaneCircle, LaneRectangle, LaneSegments, LaneSinai, LaneStadium};
 use crate::isa::Isa;
 use crate::kernels::{self, Kernel};
-use crate::outcome::{Flight, SpectrumStretch, Stretch};
+use crate::outcome::{Escape, Flight, SpectrumStretch, Stretch};
 use crate::paused::{Partner, Paused};
 
 /// A multiple of every kernel's lane count on every level (32, 24, 16, 12,
@@ -41,6 +41,9 @@ pub const CHUNK: usize = 96;
 /// outcome per initial condition, **in input order**; an outcome depends only
 /// on its own initial condition (not on the slice, the level, the lane count
 /// or the threads).
+///
+/// A table with holes is taken by [`new_open`](Self::new_open), for
+/// [`escape_times`](Self::escape_times) only.
 ///
 /// ```
 /// use spinball_core::{Billiard, SpinLaw, State};
@@ -78,6 +81,10 @@ struct Runner {
     /// The walls of a [`Shape::Segments`] compiled for the kernels (once,
     /// here, rather than on every run).
     segments: Option<LaneSegments>,
+    /// The ids of the hole walls (as `f64`, as the kernels carry wall ids);
+    /// empty for a closed table. Only [`LaneBilliard::new_open`] makes a
+    /// runner with holes, and only the escape kernel runs one.
+    holes: Vec<f64>,
     law: SpinLaw,
     isa: Isa,
     threads: usize,
@@ -85,10 +92,27 @@ struct Runner {
 
 /// Whether `table` can run in lanes: it has a [`Shape`] the kernels compile.
 /// Every built-in table and every closed `SegmentTable` can; a table with
-/// holes or periodic walls cannot (it runs on the scalar path).
+/// holes or periodic walls cannot (it runs on the scalar path; escape from
+/// holes runs in lanes, see [`has_escape_lane_form`]).
 #[must_use]
 pub fn has_lane_form<B: Boundary + ?Sized>(table: &B) -> bool {
     table.shape().is_some_and(|s| s.is_closed())
+}
+
+/// Whether [`LaneBilliard::escape_times`] runs `table` in lanes: a table
+/// built from segments (a `SegmentTable`, the only tables with holes)
+/// whose walls reflect or are holes. Periodic walls run on the scalar path.
+#[must_use]
+pub fn has_escape_lane_form<B: Boundary + ?Sized>(table: &B) -> bool {
+    table.shape().is_some_and(|s| escape_form(&s))
+}
+
+/// A table built from segments without periodic walls.
+fn escape_form(shape: &Shape) -> bool {
+    match shape {
+        Shape::Segments { kinds, .. } => !kinds.iter().any(WallKind::is_periodic),
+        _ => false,
+    }
 }
 
 impl<B: Boundary> LaneBilliard<B> {
@@ -104,6 +128,38 @@ impl<B: Boundary> LaneBilliard<B> {
         if !shape.is_closed() {
             return Err(LanesError::OpenTable);
         }
+        Self::build(table, shape, law)
+    }
+
+    /// `table` and `law` for [`escape_times`](Self::escape_times): a table
+    /// built from segments whose walls reflect or are holes (closed ones
+    /// too). The other kernels refuse a table with holes
+    /// ([`LanesError::OpenTable`]).
+    ///
+    /// # Errors
+    /// [`LanesError::NoLaneForm`] for a table without a [`Shape`], and
+    /// [`LanesError::NoEscapeForm`] for one not built from segments or with
+    /// periodic walls (run those on the scalar path).
+    pub fn new_open(table: B, law: SpinLaw) -> Result<Self, LanesError> {
+        let shape = table.shape().ok_or(LanesError::NoLaneForm)?;
+        if !escape_form(&shape) {
+            return Err(LanesError::NoEscapeForm {
+                shape: shape.to_string(),
+            });
+        }
+        Self::build(table, shape, law)
+    }
+
+    fn build(table: B, shape: Shape, law: SpinLaw) -> Result<Self, LanesError> {
+        let holes = match &shape {
+            Shape::Segments { kinds, .. } => kinds
+                .iter()
+                .enumerate()
+                .filter(|(_, k)| k.is_hole())
+                .map(|(id, _)| id as f64)
+                .collect(),
+            _ => Vec::new(),
+        };
         let segments = match &shape {
             // The walls of a `SegmentTable` make a valid one again; loops
             // that do not (a hand-made shape) have no lane form.
@@ -118,6 +174,7 @@ impl<B: Boundary> LaneBilliard<B> {
             runner: Runner {
                 shape,
                 segments,
+                holes,
                 law,
                 isa: Isa::detect(),
                 threads: 1,
@@ -381,6 +438,73 @@ impl<B: Boundary> LaneBilliard<B> {
         self.runner.spectrum(&ins, collisions, qr_interval)
     }
 
+    /// Run each start until its ball reaches a hole or the budget is spent:
+    /// at most `collisions` collisions and time `time` (`f64::INFINITY`: no
+    /// time limit). One [`Escape`] per start, in input order; a ball still
+    /// inside at the budget is censored, never dropped.
+    ///
+    /// Bitwise what the scalar path records running `Billiard::advance`
+    /// until an escape or the budget (as `spinball-analysis`'s
+    /// `OpenEnsemble::escape_times`): the same escape time, collision count
+    /// and exit (the ball's last flight to the hole is replayed by
+    /// `Billiard::advance` itself). A lane whose ball ends takes the next
+    /// start, so the lanes stay busy however unequal the escape times;
+    /// collision budgets above `2⁵³` (never reached) count as unlimited.
+    ///
+    /// # Errors
+    /// [`LanesError::InvalidOption`] for zero collisions or a time that is
+    /// not positive; [`LanesError::NoEscapeForm`] for a table not built from
+    /// segments; [`LanesError::Launch`]; [`LanesError::NonFinite`] where the
+    /// scalar path fails (no wall ahead, a stuck ball).
+    pub fn escape_times(
+        &self,
+        starts: &[State],
+        collisions: u64,
+        time: f64,
+    ) -> Result<Vec<Escape>, LanesError> {
+        check_collisions(collisions)?;
+        if !(time > 0.0) {
+            return Err(LanesError::invalid(
+                "time",
+                format!("the time budget must be > 0 (or infinite), got {time}"),
+            ));
+        }
+        if !escape_form(&self.runner.shape) {
+            return Err(LanesError::NoEscapeForm {
+                shape: self.runner.shape.to_string(),
+            });
+        }
+        self.check_starts(starts)?;
+        let ended = self.runner.escape(starts, collisions, time)?;
+        let billiard = Billiard::new(&self.table, self.runner.law);
+        ended
+            .iter()
+            .enumerate()
+            .map(|(index, e)| {
+                if !e.escaped {
+                    return Ok(Escape {
+                        time: e.time,
+                        collisions: e.collisions,
+                        exit: None,
+                    });
+                }
+                // The last flight, on the scalar path: the lanes found the
+                // same hole (bitwise the scalar cast); a disagreement is
+                // reported as a failure the scalar rerun explains.
+                let mut ball = Ball::new(e.state, &self.runner.law)
+                    .map_err(|_| LanesError::NonFinite { index })?;
+                match billiard.advance(&mut ball) {
+                    Ok(Event::Escape(exit)) => Ok(Escape {
+                        time: e.time + exit.time,
+                        collisions: e.collisions,
+                        exit: Some(exit),
+                    }),
+                    _ => Err(LanesError::NonFinite { index }),
+                }
+            })
+            .collect()
+    }
+
     fn check_starts(&self, starts: &[State]) -> Result<(), LanesError> {
         let billiard = Billiard::new(&self.table, self.runner.law);
         for (index, s) in starts.iter().enumerate() {
@@ -396,6 +520,7 @@ impl<B: Boundary> LaneBilliard<B> {
         starts: &[State],
         directions: &[TangentVector],
     ) -> Result<Vec<(State, TangentVector)>, LanesError> {
+        self.runner.closed()?;
         check_lengths(starts.len(), directions.len())?;
         self.check_starts(starts)?;
         for d in directions {
@@ -484,8 +609,38 @@ impl Runner {
         self.run(&k, ins)
     }
 
+    fn escape(
+        &self,
+        ins: &[State],
+        collisions: u64,
+        time: f64,
+    ) -> Result<Vec<kernels::Ended>, LanesError> {
+        let k = kernels::Escape {
+            collisions,
+            time,
+            holes: &self.holes,
+        };
+        // Only the curved view: on a table without arcs it finds the same
+        // hits (the flat walls win every comparison), and one copy per
+        // level keeps the crate's compile time down.
+        let Some(s) = &self.segments else {
+            return Err(LanesError::NoLaneForm);
+        };
+        sound::<kernels::Escape>(self.split(&k, &s.view::<true>(), &Law::new(&self.law), ins))
+    }
+
+    /// The λ kernels run closed tables only.
+    fn closed(&self) -> Result<(), LanesError> {
+        if self.holes.is_empty() {
+            Ok(())
+        } else {
+            Err(LanesError::OpenTable)
+        }
+    }
+
     /// Dispatch once on the table, split over threads, check the outcomes.
     fn run<K: Kernel>(&self, k: &K, ins: &[K::In]) -> Result<Vec<K::Out>, LanesError> {
+        self.closed()?;
         let law = Law::new(&self.law);
         let out = match &self.shape {
             Shape::Circle { radius } => self.split(k, &LaneCircle::new(*radius), &law, ins),
@@ -498,10 +653,7 @@ impl Runner {
                 None => return Err(LanesError::NoLaneForm),
             },
         };
-        match out.iter().position(|o| !K::is_sound(o)) {
-            Some(index) => Err(LanesError::NonFinite { index }),
-            None => Ok(out),
-        }
+        sound::<K>(out)
     }
 
     fn split<K: Kernel, G: Geom>(&self, k: &K, g: &G, law: &Law, ins: &[K::In]) -> Vec<K::Out> {
@@ -521,6 +673,14 @@ impl Runner {
                 .flat_map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
                 .collect()
         })
+    }
+}
+
+/// The outcomes, or the first that is not sound as an error.
+fn sound<K: Kernel>(out: Vec<K::Out>) -> Result<Vec<K::Out>, LanesError> {
+    match out.iter().position(|o| !K::is_sound(o)) {
+        Some(index) => Err(LanesError::NonFinite { index }),
+        None => Ok(out),
     }
 }
 

@@ -368,12 +368,31 @@ impl<L: Lanes> ZeroRun<L> {
         self.run.lane(i)
     }
 
+    /// The current runs of zero-time collisions.
+    #[inline(always)]
+    pub fn runs(&self) -> L {
+        self.run
+    }
+
     /// Count a collision that took `time`.
     #[inline(always)]
     pub fn watch(&mut self, time: L) {
         let cpu = time.proof();
         let zero = L::splat(cpu, 0.0);
         self.run = L::select(time.eq(zero), self.run + 1.0, zero);
+        self.stuck = self
+            .stuck
+            .or(self.run.gt(L::splat(cpu, f64::from(MAX_ZERO_TIME_RUN))));
+    }
+
+    /// Count a collision that took `time` in the lanes of `live` only (the
+    /// others' runs are held).
+    #[inline(always)]
+    pub fn watch_where(&mut self, time: L, live: L::Mask) {
+        let cpu = time.proof();
+        let zero = L::splat(cpu, 0.0);
+        let run = L::select(time.eq(zero), self.run + 1.0, zero);
+        self.run = L::select(live, run, self.run);
         self.stuck = self
             .stuck
             .or(self.run.gt(L::splat(cpu, f64::from(MAX_ZERO_TIME_RUN))));

@@ -48,12 +48,25 @@ pub enum LanesError {
         "the table has no lane form (its Boundary::shape() is None); run it on the scalar path"
     )]
     NoLaneForm,
-    /// The table has holes or periodic walls: the lane kernels only run
-    /// closed tables (every wall reflecting). Run it on the scalar path.
+    /// The table has holes or periodic walls: the λ kernels only run
+    /// closed tables (every wall reflecting), and escape
+    /// ([`LaneBilliard::escape_times`](crate::LaneBilliard::escape_times))
+    /// runs tables with holes but not periodic walls. Run it on the scalar
+    /// path.
     #[error(
-        "the table has holes or periodic walls, which the lane kernels do not run; run it on the scalar path"
+        "the table has holes or periodic walls, which the lane kernels of λ and trajectories do not run (escape from holes runs in lanes: LaneBilliard::new_open); run it on the scalar path"
     )]
     OpenTable,
+    /// The escape kernel runs tables built from segments (a
+    /// `SegmentTable`, the only tables with holes) whose walls reflect or
+    /// are holes; this table is a built-in one or has periodic walls.
+    #[error(
+        "escape runs in lanes on tables built from segments whose walls reflect or are holes, not on {shape}; run it on the scalar path"
+    )]
+    NoEscapeForm {
+        /// The table, as its shape prints.
+        shape: String,
+    },
     /// A trajectory (or its shadow or tangent vectors) became non-finite: no
     /// wall ahead, a shadow separation of zero, a vector that collapsed, or
     /// the ball got stuck (more than `spinball_core::MAX_ZERO_TIME_RUN`

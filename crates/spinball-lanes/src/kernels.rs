@@ -1,5 +1,6 @@
-//! The four kernels: plain trajectory, finite-difference Benettin, exact
-//! tangent, exact spectrum. Each runs `N` initial conditions in lockstep.
+//! The kernels: plain trajectory, finite-difference Benettin, exact
+//! tangent, exact spectrum, and escape from a table with holes (in
+//! [`escape`]). Each runs `N` initial conditions in lockstep.
 //!
 //! A kernel loads `L::N` initial conditions into structure-of-arrays [`Lanes`],
 //! runs all collisions with the state in registers, and writes `N` outcomes.
@@ -45,8 +46,13 @@ pub(crate) trait Kernel: Sync {
     /// (each stream's landing then covers the other's division: see
     /// docs/PERFORMANCE.md, "Latency, not operations").
     const STREAMS: usize = 1;
-    /// Run `STREAMS · L::N` initial conditions (`ins.len()`), pushing their
-    /// outcomes onto `out` in input order; `cpu` proves this CPU runs `L`.
+    /// Whether [`run_chunks`] hands the kernel the whole slice at once (a
+    /// kernel that refills its lanes as trajectories end) instead of
+    /// chunks of `STREAMS · L::N`.
+    const WHOLE: bool = false;
+    /// Run `STREAMS · L::N` initial conditions (`ins.len()`; any number
+    /// if [`WHOLE`](Self::WHOLE)), pushing their outcomes onto `out` in
+    /// input order; `cpu` proves this CPU runs `L`.
     fn chunk<G: Geom, L: Lanes>(
         &self,
         cpu: L::Needs,
@@ -77,6 +83,10 @@ pub(crate) fn run_chunks<G: Geom, K: Kernel, L: Lanes<Needs: ProvenBy<C>>, C>(
     let cpu = L::Needs::from_proof(cpu);
     let n = L::N * K::STREAMS;
     let mut out = Vec::with_capacity(ins.len() + n);
+    if K::WHOLE {
+        k.chunk::<G, L>(cpu, g, law, ins, &mut out);
+        return out;
+    }
     for c in ins.chunks(n) {
         if c.len() == n {
             k.chunk::<G, L>(cpu, g, law, c, &mut out);
@@ -525,6 +535,10 @@ impl Kernel for Spectrum {
             && o.end.to_array().iter().all(|x| x.is_finite())
     }
 }
+
+mod escape;
+
+pub(crate) use escape::{Ended, Escape};
 
 #[cfg(test)]
 mod tests;

@@ -10,9 +10,10 @@
 //! chosen **at run time** ([`Isa`]), so a plain `cargo run --release` gets the
 //! fast path.
 //!
-//! [`LaneBilliard`] runs four kernels on any table with a lane form (a
+//! [`LaneBilliard`] runs four kernels on any closed table with a lane form (a
 //! [`Shape`](spinball_geometry::Shape): the built-in `Circle`, `Rectangle`,
-//! `Stadium`, `Sinai`, and tables built from segments):
+//! `Stadium`, `Sinai`, and tables built from segments), and a fifth,
+//! escape, on tables built from segments with holes:
 //!
 //! | method | scalar specification | agreement |
 //! |---|---|---|
@@ -20,6 +21,18 @@
 //! | [`lyapunov_fd`](LaneBilliard::lyapunov_fd) | `largest_lyapunov`, `Method::FiniteDifference` | trajectories bitwise; `Σ ln` to `~1e-13` relative |
 //! | [`lyapunov_tangent`](LaneBilliard::lyapunov_tangent) | `largest_lyapunov`, `Method::Tangent` | trajectory and tangent map bitwise; `Σ ln` to rounding (see below) |
 //! | [`spectrum`](LaneBilliard::spectrum) | `lyapunov_spectrum`, `Method::Tangent` | trajectory, tangent map and Gram–Schmidt bitwise; `Σ ln R_ii` to `~1e-10` relative |
+//! | [`escape_times`](LaneBilliard::escape_times) | `Billiard::advance` until a hole or the budget (`OpenEnsemble::escape_times` of `spinball-analysis`) | bitwise (escape time, collisions, exit) |
+//!
+//! # Open tables
+//! A table with holes is built with [`LaneBilliard::new_open`]; only
+//! [`escape_times`](LaneBilliard::escape_times) runs it, the other kernels
+//! refuse it ([`LanesError::OpenTable`]), as [`LaneBilliard::new`] does.
+//! Holes exist only on tables built from segments (`SegmentTable`), so the
+//! escape kernel is compiled for that table form alone (three copies, one
+//! per instruction set), and a lane whose ball ends is refilled with the
+//! next initial condition, so no lane idles while balls remain. Tables
+//! with periodic walls run on the scalar path
+//! ([`has_escape_lane_form`] is false for them).
 //!
 //! Because the reference trajectory is **bitwise** the scalar one (same
 //! floating-point operations in the same order; no fused multiply-add, no
@@ -88,8 +101,8 @@ mod lanes;
 mod outcome;
 mod paused;
 
-pub use billiard::{CHUNK, LaneBilliard, has_lane_form};
+pub use billiard::{CHUNK, LaneBilliard, has_escape_lane_form, has_lane_form};
 pub use error::LanesError;
 pub use isa::{Isa, IsaError};
-pub use outcome::{Flight, SpectrumStretch, Stretch};
+pub use outcome::{Escape, Flight, SpectrumStretch, Stretch};
 pub use paused::Paused;

@@ -5,7 +5,7 @@
 //! per-collision exponents, to merge runs, and to compare with the scalar
 //! path without a division in between.
 
-use spinball_core::State;
+use spinball_core::{Exit, State};
 
 /// A plain trajectory: where it ended and how long it flew.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -74,5 +74,29 @@ impl SpectrumStretch {
         let mut e = self.log_stretch.map(|l| l / self.time);
         e.sort_by(|a, b| b.total_cmp(a));
         e
+    }
+}
+
+/// One ball of an escape run: when, where and how it left through a hole,
+/// or that it was still inside when the budget ran out (censored).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Escape {
+    /// Escape time; for a censored ball, the time it was last seen inside
+    /// (the time budget, or the time of its last collision when the
+    /// collision budget ran out).
+    pub time: f64,
+    /// Collisions before the escape (or before the run stopped).
+    pub collisions: u64,
+    /// Where and how it left (`None`: censored, still inside). `exit.time`
+    /// is the last flight only; the escape time is `time`.
+    pub exit: Option<Exit>,
+}
+
+impl Escape {
+    /// Whether the ball was still inside when the budget ran out.
+    #[must_use]
+    pub fn is_censored(&self) -> bool {
+        self.exit.is_none()
     }
 }

@@ -2,8 +2,11 @@
 //! hole, and how far they spread through a lattice.
 //!
 //! A table with holes or periodic walls
-//! ([`WallKind`](spinball_geometry::WallKind)) runs on the scalar engine,
-//! one event at a time ([`Billiard::advance`](spinball_core::Billiard::advance)).
+//! ([`WallKind`](spinball_geometry::WallKind)) runs one event at a time
+//! ([`Billiard::advance`](spinball_core::Billiard::advance)) on the scalar
+//! engine; escape runs on a table built from segments without periodic
+//! walls go to the vector lanes instead ([`Engine`](crate::run::Engine),
+//! [`OpenEnsemble::engine_used`]), with bitwise the same records.
 //! An [`OpenEnsemble`] is the scene (billiard, initial conditions, seed,
 //! index range, threads), drawn and split as the λ ensembles of
 //! [`run`](crate::run) are: initial condition `i` owns the stream

@@ -3,11 +3,11 @@
 
 use std::ops::Range;
 
-use spinball_core::{Ball, Billiard, Sampler};
+use spinball_core::{Ball, Billiard, Sampler, State};
 use spinball_geometry::Boundary;
 
 use crate::error::AnalysisError;
-use crate::run::{Shard, Starts, Threads};
+use crate::run::{Engine, Shard, Starts, Threads};
 
 /// Many initial conditions on one open or periodic table. See the
 /// [group docs](super).
@@ -18,6 +18,7 @@ pub struct OpenEnsemble<B> {
     seed: u64,
     indices: Range<u64>,
     threads: Threads,
+    engine: Engine,
 }
 
 impl<B: Boundary + Sync> OpenEnsemble<B> {
@@ -31,6 +32,7 @@ impl<B: Boundary + Sync> OpenEnsemble<B> {
             seed: 0,
             indices: 0..1000,
             threads: Threads::All,
+            engine: Engine::default(),
         }
     }
 
@@ -70,6 +72,33 @@ impl<B: Boundary + Sync> OpenEnsemble<B> {
         self
     }
 
+    /// Run escapes with `engine` ([`Engine::Lanes`] by default; the
+    /// records are bitwise the same on either). See
+    /// [`engine_used`](Self::engine_used).
+    #[must_use]
+    pub fn with_engine(mut self, engine: Engine) -> Self {
+        self.engine = engine;
+        self
+    }
+
+    /// The engine [`escape_times`](Self::escape_times) runs on:
+    /// [`Engine::Lanes`] if asked for and the table has an escape lane
+    /// form (a table built from segments whose walls reflect or are holes:
+    /// [`has_escape_lane_form`](spinball_lanes::has_escape_lane_form)),
+    /// else [`Engine::Scalar`] (the built-in tables, tables of your own
+    /// without a shape, periodic tables). The instruction set is chosen at
+    /// run time, as for the λ ensembles. Displacements always run on the
+    /// scalar engine.
+    #[must_use]
+    pub fn engine_used(&self) -> Engine {
+        match self.engine {
+            Engine::Lanes if spinball_lanes::has_escape_lane_form(self.billiard.table()) => {
+                Engine::Lanes
+            }
+            _ => Engine::Scalar,
+        }
+    }
+
     /// The billiard.
     #[must_use]
     pub fn billiard(&self) -> &Billiard<B> {
@@ -87,11 +116,17 @@ impl<B: Boundary + Sync> OpenEnsemble<B> {
         self.threads
     }
 
-    /// The launched ball of initial condition `index`.
-    pub(super) fn launch(&self, index: u64) -> Result<Ball, AnalysisError> {
+    /// The initial state of initial condition `index`.
+    pub(super) fn start(&self, index: u64) -> Result<State, AnalysisError> {
         let (state, _) =
             self.starts
                 .draw(self.billiard.table(), self.billiard.law(), self.seed, index)?;
+        Ok(state)
+    }
+
+    /// The launched ball of initial condition `index`.
+    pub(super) fn launch(&self, index: u64) -> Result<Ball, AnalysisError> {
+        let state = self.start(index)?;
         self.billiard
             .launch(state)
             .map_err(|source| AnalysisError::Launch { index, source })

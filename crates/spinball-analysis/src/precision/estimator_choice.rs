@@ -93,7 +93,8 @@ pub struct EstimatorPlan {
     pub kind: EstimatorKind,
     /// The plain plan ([`Planner::plan`]).
     pub plain: PlannedRun,
-    /// The multilevel plan, where the plain run is long enough for one.
+    /// The multilevel plan, where the plain run is long enough for four
+    /// levels and their pilots cost less than the plain run.
     pub multilevel: Option<MultilevelPlan>,
     /// Why, in one sentence with the predicted times.
     pub reason: String,
@@ -119,7 +120,11 @@ impl Planner {
     /// runs a pilot of `pilot_ics` initial conditions per level and
     /// predicts its work from Giles' allocation for the statistical error
     /// the plain plan's bias leaves. Multilevel wins if predicted at most
-    /// [`MULTILEVEL_MARGIN`] of the plain time.
+    /// [`MULTILEVEL_MARGIN`] of the plain time. Where the level pilots
+    /// alone would cost more than that share of the plain run (uniformly
+    /// chaotic scenes, whose plain runs are a few dozen initial
+    /// conditions), they are not run and plain is chosen: following the
+    /// planner then costs what plain costs.
     ///
     /// # Errors
     /// As [`plan`](Self::plan); as [`EnsembleLevels::new`] and the pilot
@@ -144,41 +149,23 @@ impl Planner {
                 reason,
             });
         };
-        let seconds_per_step = self
-            .pilots
-            .iter()
-            .find(|p| p.method == plain.method)
-            .map_or(0.0, |p| p.seconds_per_step);
-        let pilot_ics = pilot_ics.max(4);
-        let source = EnsembleLevels::new(
-            scene
-                .clone()
-                .with_method(plain.method)
-                .with_engine(plain.engine),
-            levels.clone(),
-        )?;
-        let stats = (0..levels.len())
-            .map(|l| LevelSamples::run(&source, l, 0..pilot_ics).map(|s| s.stats()))
-            .collect::<Result<Vec<_>, _>>()?;
-        let eps = target_rel * self.lambda().value.abs();
-        let eps_s2 = (eps * eps - plain.bias * plain.bias).max(0.1 * eps * eps);
-        let variances: Vec<f64> = stats.iter().map(|s| s.variance).collect();
-        let costs: Vec<f64> = stats.iter().map(|s| s.cost).collect();
-        let ics: Vec<u64> = giles_allocation(&variances, &costs, eps_s2)
-            .into_iter()
-            .map(|n| (n.ceil() as u64).max(pilot_ics))
-            .collect();
-        let work: f64 = ics.iter().zip(&costs).map(|(&n, c)| n as f64 * c).sum();
-        let ml = MultilevelPlan {
-            method: plain.method,
-            engine: plain.engine,
-            levels,
-            ics,
-            pilot_ics,
-            target_rel,
-            predicted_ic_steps: work,
-            predicted_wall_s: work * seconds_per_step,
-        };
+        // A multilevel run costs at least its pilots: where they alone
+        // would cost more than the margin of the plain run, do not run them.
+        let pilot_work = pilot_ics.max(4) as f64 * levels.iter().sum::<u64>() as f64;
+        if pilot_work > MULTILEVEL_MARGIN * plain.predicted_ic_steps as f64 {
+            let reason = format!(
+                "multilevel cannot pay: its pilots alone ({pilot_work:.3e} IC-steps) would cost more than {MULTILEVEL_MARGIN} of the plain run ({}, {:.3e} IC-steps)",
+                describe_plain(&plain),
+                plain.predicted_ic_steps as f64
+            );
+            return Ok(EstimatorPlan {
+                kind: EstimatorKind::Plain,
+                plain,
+                multilevel: None,
+                reason,
+            });
+        }
+        let ml = self.plan_multilevel(scene, &plain, levels, pilot_ics)?;
         let ratio = ml.predicted_ic_steps / plain.predicted_ic_steps as f64;
         let (kind, why) = if ratio <= MULTILEVEL_MARGIN {
             (EstimatorKind::Multilevel, "multilevel needs less work")
@@ -202,6 +189,59 @@ impl Planner {
             plain,
             multilevel: Some(ml),
             reason,
+        })
+    }
+
+    /// The multilevel run of `scene` with `levels` (topping out at the
+    /// `plain` plan's run length) for the statistical error the plain
+    /// plan's bias leaves: a pilot of `pilot_ics` per level, then Giles'
+    /// allocation from its variances and costs. [`plan_estimator`](Self::plan_estimator)
+    /// calls it where the pilots are worth running; a comparison of the two
+    /// estimators calls it everywhere.
+    ///
+    /// # Errors
+    /// As [`EnsembleLevels::new`] and the pilot runs.
+    pub fn plan_multilevel<B: Boundary + Clone + Sync>(
+        &self,
+        scene: &Ensemble<B>,
+        plain: &PlannedRun,
+        levels: Vec<u64>,
+        pilot_ics: u64,
+    ) -> Result<MultilevelPlan, AnalysisError> {
+        let seconds_per_step = self
+            .pilots
+            .iter()
+            .find(|p| p.method == plain.method)
+            .map_or(0.0, |p| p.seconds_per_step);
+        let pilot_ics = pilot_ics.max(4);
+        let source = EnsembleLevels::new(
+            scene
+                .clone()
+                .with_method(plain.method)
+                .with_engine(plain.engine),
+            levels.clone(),
+        )?;
+        let stats = (0..levels.len())
+            .map(|l| LevelSamples::run(&source, l, 0..pilot_ics).map(|s| s.stats()))
+            .collect::<Result<Vec<_>, _>>()?;
+        let eps = plain.target_rel * self.lambda().value.abs();
+        let eps_s2 = (eps * eps - plain.bias * plain.bias).max(0.1 * eps * eps);
+        let variances: Vec<f64> = stats.iter().map(|s| s.variance).collect();
+        let costs: Vec<f64> = stats.iter().map(|s| s.cost).collect();
+        let ics: Vec<u64> = giles_allocation(&variances, &costs, eps_s2)
+            .into_iter()
+            .map(|n| (n.ceil() as u64).max(pilot_ics))
+            .collect();
+        let work: f64 = ics.iter().zip(&costs).map(|(&n, c)| n as f64 * c).sum();
+        Ok(MultilevelPlan {
+            method: plain.method,
+            engine: plain.engine,
+            levels,
+            ics,
+            pilot_ics,
+            target_rel: plain.target_rel,
+            predicted_ic_steps: work,
+            predicted_wall_s: work * seconds_per_step,
         })
     }
 }

@@ -172,6 +172,12 @@
 //! as wide as the runs themselves and a plain ensemble is as cheap.
 //! [`Planner::plan_estimator`] predicts both from pilots and picks
 //! ([`EstimatorPlan`]: the kind, both plans, and why).
+//! [`compare_estimators`] measures both on one scene toward one target,
+//! in processor time, in alternating repeats, against an independent
+//! reference ([`EstimatorComparison`]: speed-up at equal stated error,
+//! pulls, what following the planner cost, and [`TargetPrediction`]s for
+//! smaller targets from the measured level variances; [`variance_decay`]
+//! is how fast those fall with run length).
 //!
 //! A campaign of many processes (a SLURM job array) cannot top up
 //! adaptively: its tasks never see each other. [`Multilevel::allocate`]
@@ -198,6 +204,7 @@ mod convergence;
 mod ensemble_levels;
 mod error_budget;
 mod estimator_choice;
+mod estimator_comparison;
 mod finite_time_bias;
 mod level_allocation;
 mod level_extrapolation;
@@ -216,6 +223,10 @@ pub use ensemble_levels::{
 };
 pub use error_budget::{ErrorBudget, Reference};
 pub use estimator_choice::{EstimatorKind, EstimatorPlan, MULTILEVEL_MARGIN, MultilevelPlan};
+pub use estimator_comparison::{
+    EstimatorComparison, EstimatorRun, TargetPrediction, compare_estimators, process_cpu_seconds,
+    variance_decay,
+};
 pub use finite_time_bias::{BiasFit, BiasLaw, BiasRegime, FiniteTimeBias, MIN_CHECKPOINTS};
 pub use level_allocation::{LevelAllocation, LevelShard};
 pub use level_extrapolation::LevelExtrapolation;

@@ -38,7 +38,7 @@ mod horizon;
 mod summary;
 mod table_horizon;
 
-pub use ballistic::{BALLISTIC_EXCESS, Ballistic, STRAIGHTNESS};
+pub use ballistic::{Ballistic, MAX_RESIDUAL, MIN_INCREMENTS};
 pub use diffusion::{
     Diffusion, DiffusionFit, FitWindow, MIN_POINTS, Trend, WindowScan, diffusion, window_scan,
 };

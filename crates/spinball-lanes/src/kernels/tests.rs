@@ -209,3 +209,43 @@ fn counts<B: spinball_geometry::Boundary, G: Geom>(
     let spectrum = report("spectrum", 1);
     [plain, fd, tangent, spectrum]
 }
+
+/// The escape kernel refills its lanes as balls end: which lane runs a
+/// ball, and after which others, changes no record (one lane against
+/// three, 37 starts, budgets in collisions and in time).
+#[test]
+fn escape_records_do_not_depend_on_the_lanes_a_ball_runs_in() {
+    use spinball_geometry::SegmentTable;
+
+    use crate::geom::LaneSegments;
+
+    let table =
+        SegmentTable::stadium_with_hole(1.0, 2.0 + 0.5 * std::f64::consts::PI, 0.3).unwrap();
+    let law = SpinLaw::new(0.4).unwrap();
+    let l = Law::new(&law);
+    let ls = LaneSegments::new(&table);
+    let g = ls.view::<true>();
+    let holes: Vec<f64> = table
+        .kinds()
+        .iter()
+        .enumerate()
+        .filter(|(_, k)| k.is_hole())
+        .map(|(i, _)| i as f64)
+        .collect();
+    assert_eq!(holes.len(), 1);
+    let starts: Vec<State> = (0..37)
+        .map(|i| Sampler::Paper.initial_state(&table, &law, 3, i))
+        .collect();
+    for (collisions, time) in [(200, f64::INFINITY), (u64::MAX, 30.0)] {
+        let k = Escape {
+            collisions,
+            time,
+            holes: &holes,
+        };
+        let one = run_chunks::<_, _, f64, _>(Baseline, &g, &l, &k, &starts);
+        let three = run_chunks::<_, _, Wide<f64, 3>, _>(Baseline, &g, &l, &k, &starts);
+        assert_eq!(three, one);
+        assert_eq!(one.len(), starts.len());
+        assert!(one.iter().any(|e| e.escaped) && one.iter().any(|e| !e.escaped));
+    }
+}

@@ -104,40 +104,61 @@ simd_lanes! {
                 let k = _mm256_cvttpd_epi32(index.0);
                 _mm_min_epu32(k, _mm_set1_epi32(rows.len() as i32 - 1))
             };
-            let lane = |i: i32| -> &[f64; 8] {
-                // SAFETY: SSE4.1 intrinsics, as above (`rows[k]` is then
-                // bounds-checked).
-                let k = unsafe {
-                    match i {
-                        0 => _mm_extract_epi32::<0>(k),
-                        1 => _mm_extract_epi32::<1>(k),
-                        2 => _mm_extract_epi32::<2>(k),
-                        _ => _mm_extract_epi32::<3>(k),
-                    }
-                };
-                &rows[k as u32 as usize]
-            };
-            let (a, b, c, d) = (lane(0), lane(1), lane(2), lane(3));
-            // Columns `2j` and `2j + 1`: lanes 0 and 2 of the pair in one
-            // register, lanes 1 and 3 in another, interleaved.
-            let pair = |j: usize| -> (Avx2, Avx2) {
-                // SAFETY: AVX intrinsics (`index.1` proves AVX2); each 16-byte
-                // load reads entries `2j, 2j + 1` (`j < 4`) of a row of 8.
-                unsafe {
-                    let two = |row: &[f64; 8]| _mm_loadu_pd(row[2 * j..2 * j + 2].as_ptr());
-                    let ac = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(two(a)), two(c));
-                    let bd = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(two(b)), two(d));
-                    (
-                        Avx2(_mm256_unpacklo_pd(ac, bd), index.1),
-                        Avx2(_mm256_unpackhi_pd(ac, bd), index.1),
-                    )
-                }
-            };
-            let (c0, c1) = pair(0);
-            let (c2, c3) = pair(1);
-            let (c4, c5) = pair(2);
-            let (c6, c7) = pair(3);
+            // Helper functions rather than closures: a closure does not
+            // take on the caller's target features and, in a large kernel,
+            // may be left out of line, its intrinsics then called one by one.
+            let (a, b, c, d) = (
+                row::<0>(rows, k, index.1),
+                row::<1>(rows, k, index.1),
+                row::<2>(rows, k, index.1),
+                row::<3>(rows, k, index.1),
+            );
+            let (c0, c1) = pair::<0>([a, b, c, d], index.1);
+            let (c2, c3) = pair::<2>([a, b, c, d], index.1);
+            let (c4, c5) = pair::<4>([a, b, c, d], index.1);
+            let (c6, c7) = pair::<6>([a, b, c, d], index.1);
             [c0, c1, c2, c3, c4, c5, c6, c7]
         }
+    }
+}
+
+/// Row `k[I]` of `rows` (`k` clamped to the rows); `cpu` proves AVX2.
+#[inline(always)]
+fn row<const I: i32>(rows: &[[f64; 8]], k: __m128i, _cpu: Avx2Cpu) -> &[f64; 8] {
+    // SAFETY: an SSE4.1 intrinsic (AVX2 implies SSE4.1); `cpu` proves this
+    // CPU has AVX2. `rows[k]` is then bounds-checked.
+    let k = unsafe {
+        match I {
+            0 => _mm_extract_epi32::<0>(k),
+            1 => _mm_extract_epi32::<1>(k),
+            2 => _mm_extract_epi32::<2>(k),
+            _ => _mm_extract_epi32::<3>(k),
+        }
+    };
+    &rows[k as u32 as usize]
+}
+
+/// Columns `C` and `C + 1` of the four rows `[a, b, c, d]` (one per lane),
+/// transposed: lanes 0 and 2 of the pair in one register, lanes 1 and 3 in
+/// another, interleaved; `cpu` proves AVX2.
+#[inline(always)]
+fn pair<const C: usize>(rows: [&[f64; 8]; 4], cpu: Avx2Cpu) -> (Avx2, Avx2) {
+    const { assert!(C < 7) };
+    let [a, b, c, d] = rows;
+    // SAFETY: AVX intrinsics (`cpu` proves AVX2); each 16-byte load reads
+    // entries `C, C + 1` (`C < 7`) of a row of 8.
+    unsafe {
+        let ac = _mm256_insertf128_pd::<1>(
+            _mm256_castpd128_pd256(_mm_loadu_pd(a[C..C + 2].as_ptr())),
+            _mm_loadu_pd(c[C..C + 2].as_ptr()),
+        );
+        let bd = _mm256_insertf128_pd::<1>(
+            _mm256_castpd128_pd256(_mm_loadu_pd(b[C..C + 2].as_ptr())),
+            _mm_loadu_pd(d[C..C + 2].as_ptr()),
+        );
+        (
+            Avx2(_mm256_unpacklo_pd(ac, bd), cpu),
+            Avx2(_mm256_unpackhi_pd(ac, bd), cpu),
+        )
     }
 }
