@@ -5,7 +5,7 @@
 //! estimate must say "ballistic", never give a finite `D`; its neighbours
 //! at α = 0 diffuse normally.
 
-use spinball_analysis::open::OpenEnsemble;
+use spinball_analysis::open::{DisplacementRecord, OpenEnsemble};
 use spinball_analysis::run::Threads;
 use spinball_analysis::transport::{Diffusion, Displacements, diffusion};
 use spinball_core::{Billiard, SpinLaw};
@@ -25,10 +25,7 @@ fn estimate(alpha: f64) -> Diffusion {
     .with_threads(Threads::Fixed(2))
     .displacements(&times)
     .unwrap();
-    let dr: Vec<[f64; 2]> = records
-        .iter()
-        .flat_map(|r| r.displacement.iter().map(|d| [d.x, d.y]))
-        .collect();
+    let dr = DisplacementRecord::rows(&records);
     let d = Displacements::new(&times, &dr).unwrap();
     diffusion(&d, gas.horizon().into(), None).unwrap()
 }

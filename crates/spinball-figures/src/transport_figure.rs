@@ -58,10 +58,7 @@ impl DiffusionRun {
         times: &[f64],
         records: &[DisplacementRecord],
     ) -> Result<Self, TransportError> {
-        let dr: Vec<[f64; 2]> = records
-            .iter()
-            .flat_map(|r| r.displacement.iter().map(|d| [d.x, d.y]))
-            .collect();
+        let dr = DisplacementRecord::rows(records);
         let d = Displacements::new(times, &dr)?;
         Ok(DiffusionRun {
             alpha,
@@ -230,17 +227,21 @@ mod tests {
         assert_eq!(t.iter().filter(|&&x| x >= 32.0 - 1e-9).count(), 5);
     }
 
-    /// Records of deterministic paths `Δr = (±√(4Dt), 0)` alternating in
-    /// sign: `|Δr|² = 4Dt` for every IC, so `D` is exact and the SE 0.
-    fn ballistic(times: &[f64], d: f64) -> Vec<DisplacementRecord> {
+    /// Records of deterministic paths with `|Δr|² = 4Dt` for every IC (so
+    /// `D` is exact and the SE 0), turning a quarter turn at each
+    /// checkpoint (so that no ball moves in a straight line, which the
+    /// ballistic check would flag).
+    fn exact_growth(times: &[f64], d: f64) -> Vec<DisplacementRecord> {
         (0..4u64)
             .map(|i| DisplacementRecord {
                 index: i,
                 displacement: times
                     .iter()
-                    .map(|t| {
-                        let s = if i % 2 == 0 { 1.0 } else { -1.0 };
-                        DVec2::new(s * (4.0 * d * t).sqrt(), 0.0)
+                    .enumerate()
+                    .map(|(j, t)| {
+                        let turn = (i as usize + j) % 4;
+                        let r = (4.0 * d * t).sqrt();
+                        [DVec2::X, DVec2::Y, -DVec2::X, -DVec2::Y][turn] * r
                     })
                     .collect(),
                 collisions: 0,
@@ -255,7 +256,7 @@ mod tests {
         let runs: Vec<DiffusionRun> = [(0.0, 0.1), (1.0, 0.02)]
             .into_iter()
             .map(|(alpha, d)| {
-                DiffusionRun::new(alpha, Horizon::Finite, &times, &ballistic(&times, d)).unwrap()
+                DiffusionRun::new(alpha, Horizon::Finite, &times, &exact_growth(&times, d)).unwrap()
             })
             .collect();
         let d = runs[1].estimate.finite_d().unwrap();
@@ -272,7 +273,7 @@ mod tests {
         assert!(lines.validate().is_ok());
         // The same data on an infinite-horizon table: no finite D, no point.
         let marginal =
-            DiffusionRun::new(0.0, Horizon::Infinite, &times, &ballistic(&times, 0.1)).unwrap();
+            DiffusionRun::new(0.0, Horizon::Infinite, &times, &exact_growth(&times, 0.1)).unwrap();
         assert!(marginal.estimate.finite_d().is_none());
         let mut csv = Csv::new(&DIFFUSION_COLUMNS);
         diffusion_row(&mut csv, "gas", &runs[0]);

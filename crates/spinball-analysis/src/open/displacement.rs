@@ -24,6 +24,19 @@ pub struct DisplacementRecord {
     pub crossings: u64,
 }
 
+impl DisplacementRecord {
+    /// The records' displacements as the IC-major `[Δx, Δy]` rows
+    /// [`Displacements`](crate::transport::Displacements) takes (all
+    /// records at the same checkpoints).
+    #[must_use]
+    pub fn rows(records: &[DisplacementRecord]) -> Vec<[f64; 2]> {
+        records
+            .iter()
+            .flat_map(|r| r.displacement.iter().map(|d| [d.x, d.y]))
+            .collect()
+    }
+}
+
 impl<B: Boundary + Sync> OpenEnsemble<B> {
     /// Run each initial condition to the last of `times` and record its
     /// unwrapped displacement ([`Billiard::unwrapped`](spinball_core::Billiard::unwrapped):

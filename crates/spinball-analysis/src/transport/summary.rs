@@ -49,10 +49,7 @@ impl DiffusionSummary {
         horizon: Horizon,
         window: Option<FitWindow>,
     ) -> Result<Self, TransportError> {
-        let dr: Vec<[f64; 2]> = records
-            .iter()
-            .flat_map(|r| r.displacement.iter().map(|d| [d.x, d.y]))
-            .collect();
+        let dr = DisplacementRecord::rows(records);
         let d = Displacements::new(times, &dr)?;
         Ok(DiffusionSummary {
             horizon,
@@ -122,10 +119,7 @@ mod tests {
                 crossings: 0,
             })
             .collect();
-        let dr: Vec<[f64; 2]> = records
-            .iter()
-            .flat_map(|r| r.displacement.iter().map(|d| [d.x, d.y]))
-            .collect();
+        let dr = DisplacementRecord::rows(&records);
         let d = Displacements::new(&times, &dr).unwrap();
         for horizon in [Horizon::Finite, Horizon::Infinite] {
             let s = DiffusionSummary::new(&times, &records, horizon, None).unwrap();
