@@ -212,7 +212,7 @@ impl fmt::Display for AlgebraicTail {
         write!(
             f,
             "tail t > {} ({} escapes): {} (Vuong z = {:.1}); β = {}, γ = {}",
-            self.t_min,
+            crate::estimators::Significant(self.t_min, 4),
             self.escaped,
             self.law,
             self.vuong_z,

@@ -181,8 +181,8 @@ impl fmt::Display for EscapeRate {
                 Clock::Time => "unit time",
                 Clock::Collisions => "collision",
             },
-            self.t0,
-            self.t1,
+            crate::estimators::Significant(self.t0, 4),
+            crate::estimators::Significant(self.t1, 4),
             self.escaped,
             self.drift
                 .map_or_else(|| "not measured".to_string(), |z| format!("{z:.1} SE"))

@@ -19,6 +19,8 @@
 
 use std::fmt;
 
+use crate::estimators::Significant;
+
 use spinball_core::Sampler;
 use spinball_geometry::Boundary;
 
@@ -182,13 +184,13 @@ impl fmt::Display for KacPrediction {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "Kac: hole {} of {} (μ = {:.4e}) at α = {}: {:.4} collisions, time {:.4}",
-            self.hole,
-            self.perimeter,
+            "Kac: hole {} of {} (μ = {:.4e}) at α = {}: {} collisions, time {}",
+            Significant(self.hole, 6),
+            Significant(self.perimeter, 6),
             self.hole_measure,
             self.alpha,
-            self.mean_collisions,
-            self.mean_time
+            Significant(self.mean_collisions, 5),
+            Significant(self.mean_time, 5)
         )
     }
 }

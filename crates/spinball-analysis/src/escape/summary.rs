@@ -12,7 +12,7 @@ use super::{
     AlgebraicTail, Clock, EscapeError, EscapeRate, KacPrediction, KacRatio, MeanEscape, RateWindow,
     Survival, TailWindow, Z95,
 };
-use crate::estimators::{Fitted, PlusMinus};
+use crate::estimators::{Fitted, PlusMinus, Significant};
 use crate::open::EscapeRecord;
 
 /// The windows and band of an escape summary.
@@ -191,13 +191,13 @@ impl fmt::Display for ClockSummary {
         let bound = if m.complete { "" } else { ">= " };
         write!(f, "  mean     {bound}{}", PlusMinus::new(m.mean, m.sem))?;
         if let Some(median) = self.survival.median() {
-            write!(f, ", median {median}")?;
+            write!(f, ", median {}", Significant(median, 4))?;
         }
         if let Some(k) = &self.kac {
             write!(
                 f,
-                "; Kac {:.6}, ratio {bound}{}",
-                k.predicted,
+                "; Kac {}, ratio {bound}{}",
+                Significant(k.predicted, 5),
                 PlusMinus::new(k.ratio, k.ratio_sem)
             )?;
         }

@@ -116,6 +116,7 @@ mod fitted;
 mod ftle;
 mod lyapunov;
 mod plus_minus;
+mod significant;
 mod spectrum;
 mod stats;
 
@@ -125,6 +126,7 @@ pub use lyapunov::{
     HistoryPoint, Lyapunov, LyapunovOptions, Method, PAPER_DELTA0, largest_lyapunov,
 };
 pub use plus_minus::PlusMinus;
+pub use significant::Significant;
 pub(crate) use spectrum::random_frame;
 pub use spectrum::{Spectrum, SpectrumOptions, lyapunov_spectrum};
 pub use stats::{
