@@ -362,6 +362,19 @@ mod tests {
         (a - b).abs() < 1e-9
     }
 
+    /// The closed loop of straight walls through `corners`, in order.
+    fn loop_of(corners: &[(f64, f64)]) -> Vec<Segment> {
+        let p = |i: usize| {
+            let (x, y) = corners[i % corners.len()];
+            DVec2::new(x, y)
+        };
+        (0..corners.len())
+            .map(|i| Segment::Line(LineSegment::new(p(i), p(i + 1)).unwrap()))
+            .collect()
+    }
+
+    const UNIT_SQUARE: [(f64, f64); 4] = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
+
     #[test]
     fn the_square_gas_has_its_rows_and_for_small_disks_its_diagonals() {
         // Rows and columns: width w − 2R (the disks' shadows are 2R of the
@@ -425,15 +438,9 @@ mod tests {
     #[test]
     fn a_channel_has_its_corridor_along_it_unless_a_baffle_closes_it() {
         let p = DVec2::new;
-        let line = |a, b| Segment::Line(LineSegment::new(a, b).unwrap());
         // A strip 0 ≤ y ≤ 1 with a disk of radius 0.2 at (0.5, 0.5): two
         // corridors of width 0.3 along x.
-        let outer = vec![
-            line(p(0.0, 0.0), p(1.0, 0.0)),
-            line(p(1.0, 0.0), p(1.0, 1.0)),
-            line(p(1.0, 1.0), p(0.0, 1.0)),
-            line(p(0.0, 1.0), p(0.0, 0.0)),
-        ];
+        let outer = loop_of(&UNIT_SQUARE);
         let disk = crate::ArcSegment::new(p(0.5, 0.5), 0.2, 0.0, -std::f64::consts::TAU).unwrap();
         let strip = SegmentTable::with_holes(outer.clone(), vec![vec![Segment::Arc(disk)]])
             .unwrap()
@@ -468,22 +475,10 @@ mod tests {
         // Cell [0, 1]² with an axis-aligned square obstacle of side s at its
         // centre: rows open (width 1 − s); a straight-walled obstacle closed
         // inside the cell has a width (s), so the search is bounded.
-        let p = DVec2::new;
-        let line = |a, b| Segment::Line(LineSegment::new(a, b).unwrap());
-        let outer = vec![
-            line(p(0.0, 0.0), p(1.0, 0.0)),
-            line(p(1.0, 0.0), p(1.0, 1.0)),
-            line(p(1.0, 1.0), p(0.0, 1.0)),
-            line(p(0.0, 1.0), p(0.0, 0.0)),
-        ];
+        let outer = loop_of(&UNIT_SQUARE);
         let (a, b) = (0.3, 0.7);
         // Clockwise: the table lies outside the obstacle.
-        let obstacle = vec![
-            line(p(a, a), p(a, b)),
-            line(p(a, b), p(b, b)),
-            line(p(b, b), p(b, a)),
-            line(p(b, a), p(a, a)),
-        ];
+        let obstacle = loop_of(&[(a, a), (a, b), (b, b), (b, a)]);
         let table = SegmentTable::with_holes(outer, vec![obstacle])
             .unwrap()
             .with_periodic(0, 2)
@@ -502,16 +497,14 @@ mod tests {
         // each ending on a periodic side (in the plane they join their
         // neighbours' cuts): no run of wall inside the cell has a width to
         // bound the search, so an error, never a guess.
-        let p = DVec2::new;
-        let line = |a, b| Segment::Line(LineSegment::new(a, b).unwrap());
-        let cell = vec![
-            line(p(0.0, 0.0), p(0.8, 0.0)),
-            line(p(0.8, 0.0), p(1.0, 0.2)),
-            line(p(1.0, 0.2), p(1.0, 1.0)),
-            line(p(1.0, 1.0), p(0.2, 1.0)),
-            line(p(0.2, 1.0), p(0.0, 0.8)),
-            line(p(0.0, 0.8), p(0.0, 0.0)),
-        ];
+        let cell = loop_of(&[
+            (0.0, 0.0),
+            (0.8, 0.0),
+            (1.0, 0.2),
+            (1.0, 1.0),
+            (0.2, 1.0),
+            (0.0, 0.8),
+        ]);
         let table = SegmentTable::new(cell)
             .unwrap()
             .with_periodic(0, 3)
